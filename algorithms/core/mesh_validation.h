@@ -1,0 +1,32 @@
+#pragma once
+/// Validation of an input solid: what a fracturer may assume about its mesh.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+
+#include <string>
+
+namespace shatter {
+
+/// What validate_solid found and fixed.
+struct ValidationReport {
+  bool flipped = false;            ///< the mesh was closed but oriented inward; its faces were reversed
+  int removed_unused_vertices = 0; ///< vertices no triangle referenced, dropped
+  int merged_duplicate_vertices = 0;  ///< vertices with identical coordinates, merged into one
+};
+
+/// Checks that `mesh` is a valid solid and normalises it in place: finite coordinates; no triangle
+/// with repeated indices or zero area (exactly collinear corners); every undirected edge shared by
+/// exactly two triangles with opposite directions (closed, 2-manifold, consistently oriented);
+/// positive volume (an inward mesh is flipped and reported). Unused vertices are dropped and
+/// duplicate vertices merged before the checks. `what` names the input in the error message
+/// (for example the file name).
+Result<ValidationReport> validate_solid(Mesh& mesh, const std::string& what);
+
+/// True when every undirected edge is used by exactly two triangles in opposite directions.
+bool is_closed_and_oriented(const Mesh& mesh);
+
+/// True when every coordinate is finite.
+bool all_finite(const Mesh& mesh);
+
+}  // namespace shatter

@@ -1,0 +1,53 @@
+#pragma once
+/// The fracturer interface: every fracture algorithm turns one closed solid into closed fragments.
+///
+/// Contract (checked by the conformance test for every registered fracturer): the input is a solid
+/// that passed validate_solid; every output fragment is closed, consistently outward-oriented, with
+/// faces tagged surface or cut; the fragments partition the input (volumes sum to the input volume);
+/// the same input, parameters and seed give the same fragments in the same order.
+
+#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace shatter {
+
+/// Where and how hard a fragment is hit.
+struct Impact {
+  Vec3 point = Vec3::Zero();           ///< m, world
+  Vec3 direction = -Vec3::UnitZ();     ///< unit direction of the impulse
+  double impulse = 0.0;                ///< N s
+  double radius = 0.0;                 ///< m; 0 = the whole piece is affected
+};
+
+/// What a fracturer is asked for.
+struct FractureParams {
+  int fragments = 10;                  ///< requested number of fragments (>= 1)
+  std::uint64_t seed = 1;              ///< random seed; same seed, same output
+  std::optional<Impact> impact;        ///< where the piece is hit, when it is
+};
+
+/// One output fragment: a closed mesh and its mass properties (density 1).
+struct Fragment {
+  Mesh mesh;                 ///< closed, outward, faces tagged surface or cut
+  MassProperties mass;       ///< of `mesh`
+};
+
+/// A fracture algorithm. Implementations are stateless after construction and thread-compatible.
+class Fracturer {
+ public:
+  virtual ~Fracturer() = default;
+  /// Registered name, for example "plane-slice".
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  /// Fractures `solid` (a validated closed mesh). Errors only for parameters it cannot honour.
+  [[nodiscard]] virtual Result<std::vector<Fragment>> fracture(const Mesh& solid,
+                                                               const FractureParams& params) const = 0;
+};
+
+}  // namespace shatter

@@ -1,0 +1,27 @@
+#pragma once
+/// plane-slice: recursive slicing by random planes through the piece (seed section 8.1), caps by
+/// constrained Delaunay triangulation, disconnected parts split into their own fragments.
+
+#include "algorithms/core/plane.h"
+#include "algorithms/fracture/fracturer.h"
+#include "algorithms/fracture/fracturer_registry.h"
+
+#include <span>
+
+namespace shatter {
+
+/// The plane-slice fracturer.
+class PlaneSliceFracturer final : public Fracturer {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "plane-slice"; }
+  [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
+                                                       const FractureParams& params) const override;
+  /// Cuts `solid` by each plane in turn (every piece a plane crosses is split).
+  [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid,
+                                                                 std::span<const Plane> planes) const;
+};
+
+/// Registers "plane-slice".
+void register_plane_slice(FracturerRegistry& registry);
+
+}  // namespace shatter
