@@ -1,0 +1,201 @@
+#include "algorithms/fracture/plane_slice/mesh_slicer.h"
+
+#include "algorithms/core/predicates.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace shatter {
+namespace {
+
+std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+/// The axis-aligned projection in which the plane's normal points towards the viewer: counter-
+/// clockwise in 2D is counter-clockwise seen from the positive side. Exact (it only drops and
+/// reorders coordinates).
+struct Projection {
+  int u = 0;
+  int v = 1;
+  explicit Projection(const Vec3& normal) {
+    int k = 0;
+    if (std::abs(normal.y()) > std::abs(normal[k])) k = 1;
+    if (std::abs(normal.z()) > std::abs(normal[k])) k = 2;
+    u = (k + 1) % 3;
+    v = (k + 2) % 3;
+    if (normal[k] < 0) std::swap(u, v);
+  }
+  [[nodiscard]] Vec2 operator()(const Vec3& p) const { return {p[u], p[v]}; }
+};
+
+}  // namespace
+
+SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above) {
+  error_.clear();
+  mesh_ = &mesh;
+  plane_ = plane;
+  vertex_count_ = static_cast<std::int32_t>(mesh.vertices.size());
+  side_.resize(mesh.vertices.size());
+  int positive = 0;
+  int negative = 0;
+  for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
+    const int s = plane_side(mesh.vertices[v], plane.point, plane.normal);
+    side_[v] = static_cast<std::int8_t>(s);
+    positive += s > 0;
+    negative += s < 0;
+  }
+  if (positive == 0) return SliceOutcome::all_below;
+  if (negative == 0) return SliceOutcome::all_above;
+
+  Mesh halves[2];
+  halves_[below_side] = &halves[below_side];
+  halves_[above_side] = &halves[above_side];
+  for (auto& index : index_) index.assign(mesh.vertices.size(), -1);
+  crossing_points_.clear();
+  crossing_of_edge_.clear();
+  outline_.clear();
+  for (Mesh* half : halves_) {
+    half->vertices.reserve(mesh.vertices.size() / 2 + 16);
+    half->triangles.reserve(mesh.triangles.size() / 2 + 16);
+    half->tags.reserve(mesh.triangles.size() / 2 + 16);
+  }
+
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) split_triangle(mesh.triangles[f], mesh.tags[f]);
+  if (!add_cap()) return SliceOutcome::failed;
+
+  below = std::move(halves[below_side]);
+  above = std::move(halves[above_side]);
+  return SliceOutcome::cut;
+}
+
+std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
+  const std::uint64_t key = edge_key(std::min(a, b), std::max(a, b));
+  const auto found = crossing_of_edge_.find(key);
+  if (found != crossing_of_edge_.end()) return found->second;
+  // Interpolate from the positive end so that both triangles of the edge get the same point.
+  const std::int32_t p = side_[static_cast<std::size_t>(a)] > 0 ? a : b;
+  const std::int32_t m = p == a ? b : a;
+  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
+  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
+  const double dp = plane_.normal.dot(pp - plane_.point);
+  const double dm = plane_.normal.dot(pm - plane_.point);
+  const double denom = dp - dm;
+  double t = denom > 0 ? dp / denom : 0.5;  // the exact signs say dp > 0 > dm; round-off may not
+  t = std::clamp(t, 0.0, 1.0);
+  const std::int32_t ref = vertex_count_ + static_cast<std::int32_t>(crossing_points_.size());
+  crossing_points_.push_back(pp + t * (pm - pp));
+  index_[below_side].push_back(-1);
+  index_[above_side].push_back(-1);
+  crossing_of_edge_.emplace(key, ref);
+  return ref;
+}
+
+std::int32_t MeshSlicer::index_in(Side side, std::int32_t ref) {
+  std::int32_t& idx = index_[side][static_cast<std::size_t>(ref)];
+  if (idx < 0) idx = halves_[side]->add_vertex(position(ref));
+  return idx;
+}
+
+void MeshSlicer::emit(Side side, std::int32_t r0, std::int32_t r1, std::int32_t r2, FaceTag tag) {
+  halves_[side]->add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), tag);
+  if (side != below_side) return;
+  // Record the lower half's in-plane half-edges; twins cancel, the rest is the cut outline.
+  const std::int32_t r[3] = {r0, r1, r2};
+  for (int k = 0; k < 3; ++k) {
+    const std::int32_t a = r[k];
+    const std::int32_t b = r[(k + 1) % 3];
+    if (!on_plane(a) || !on_plane(b)) continue;
+    const auto twin = outline_.find(edge_key(b, a));
+    if (twin != outline_.end() && twin->second > 0) {
+      if (--twin->second == 0) outline_.erase(twin);
+    } else {
+      ++outline_[edge_key(a, b)];
+    }
+  }
+}
+
+void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
+  const int s[3] = {side_[static_cast<std::size_t>(t[0])], side_[static_cast<std::size_t>(t[1])],
+                    side_[static_cast<std::size_t>(t[2])]};
+  const int positive = (s[0] > 0) + (s[1] > 0) + (s[2] > 0);
+  const int negative = (s[0] < 0) + (s[1] < 0) + (s[2] < 0);
+  if (negative == 0 && positive > 0) return emit(above_side, t[0], t[1], t[2], tag);
+  if (positive == 0 && negative > 0) return emit(below_side, t[0], t[1], t[2], tag);
+  if (positive == 0 && negative == 0) {
+    // In the plane: the face bounds the side its normal points away from.
+    const Projection proj(plane_.normal);
+    const Vec3* p[3] = {&mesh_->vertices[static_cast<std::size_t>(t[0])],
+                        &mesh_->vertices[static_cast<std::size_t>(t[1])],
+                        &mesh_->vertices[static_cast<std::size_t>(t[2])]};
+    const int facing = orient2d(proj(*p[0]), proj(*p[1]), proj(*p[2]));
+    return emit(facing >= 0 ? below_side : above_side, t[0], t[1], t[2], tag);
+  }
+  const auto side_of = [&](int k) { return s[k] > 0 ? above_side : below_side; };
+  if (positive + negative == 2) {
+    // One corner on the plane: split along the segment from it to the opposite edge's crossing.
+    int z = 0;
+    while (s[z] != 0) ++z;
+    const std::int32_t a = t[z];
+    const std::int32_t b = t[(z + 1) % 3];
+    const std::int32_t c = t[(z + 2) % 3];
+    const std::int32_t x = crossing(b, c);
+    emit(side_of((z + 1) % 3), a, b, x, tag);
+    emit(side_of((z + 2) % 3), a, x, c, tag);
+    return;
+  }
+  // One corner alone on its side: a triangle there, a quad (two triangles) on the other.
+  int lone = 0;
+  if (s[1] != s[2] && s[1] != s[0]) lone = 1;
+  if (s[2] != s[0] && s[2] != s[1]) lone = 2;
+  const std::int32_t a = t[lone];
+  const std::int32_t b = t[(lone + 1) % 3];
+  const std::int32_t c = t[(lone + 2) % 3];
+  const std::int32_t xab = crossing(a, b);
+  const std::int32_t xac = crossing(a, c);
+  const Side lone_side = side_of(lone);
+  const Side other_side = lone_side == above_side ? below_side : above_side;
+  emit(lone_side, a, xab, xac, tag);
+  emit(other_side, xab, b, c, tag);
+  emit(other_side, xab, c, xac, tag);
+}
+
+bool MeshSlicer::add_cap() {
+  const Projection proj(plane_.normal);
+  cap_ref_.clear();
+  cap_points_.clear();
+  cap_edges_.clear();
+  cap_point_of_ref_.clear();
+  const auto cap_point = [&](std::int32_t ref) {
+    const auto [it, inserted] = cap_point_of_ref_.try_emplace(ref, static_cast<std::int32_t>(cap_ref_.size()));
+    if (inserted) {
+      cap_ref_.push_back(ref);
+      cap_points_.push_back(proj(position(ref)));
+    }
+    return it->second;
+  };
+  for (const auto& [key, count] : outline_) {
+    const auto a = static_cast<std::int32_t>(key >> 32);
+    const auto b = static_cast<std::int32_t>(key & 0xffffffffu);
+    // The cap closes the lower half: its edges run opposite to the outline.
+    for (int i = 0; i < count; ++i) cap_edges_.push_back({cap_point(b), cap_point(a)});
+  }
+  if (cap_edges_.empty()) return true;
+  const CapTriangulation cap = triangulate_cap(cap_points_, cap_edges_);
+  if (!cap.ok) {
+    error_ = "cap triangulation failed: " + cap.error;
+    return false;
+  }
+  for (const Triangle& t : cap.triangles) {
+    const std::int32_t r0 = cap_ref_[static_cast<std::size_t>(t[0])];
+    const std::int32_t r1 = cap_ref_[static_cast<std::size_t>(t[1])];
+    const std::int32_t r2 = cap_ref_[static_cast<std::size_t>(t[2])];
+    halves_[below_side]->add_triangle(index_in(below_side, r0), index_in(below_side, r1),
+                                      index_in(below_side, r2), FaceTag::cut);
+    halves_[above_side]->add_triangle(index_in(above_side, r0), index_in(above_side, r2),
+                                      index_in(above_side, r1), FaceTag::cut);
+  }
+  return true;
+}
+
+}  // namespace shatter

@@ -1,0 +1,78 @@
+#pragma once
+/// The slicing kernel: one closed mesh, one plane, two closed meshes.
+///
+/// Design note: topology is decided by exact predicates only (which side of the plane each vertex is
+/// on, exactly), geometry is then constructed in double (the crossing points). Every edge that crosses
+/// the plane gets one crossing point shared by both triangles on it, so both halves stay closed by
+/// construction. Faces lying in the plane go to the side they bound (their normal points away from
+/// it). The cut's outline is not traced as loops: it is the set of half-edges of the lower half that
+/// lie in the plane and have no twin there, which is exactly the boundary the cap must close, however
+/// many loops, holes, nested loops or touching loops it has. The cap is one constrained Delaunay
+/// triangulation of that outline in an axis-aligned projection (exact: no rotation of coordinates),
+/// used as is for the lower half and reversed for the upper half.
+///
+/// The slicer keeps scratch buffers between calls; one slicer per thread.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/plane.h"
+#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace shatter {
+
+/// What one slice did.
+enum class SliceOutcome {
+  cut,         ///< both halves non-empty
+  all_below,   ///< the plane does not cut the mesh; nothing written
+  all_above,   ///< the plane does not cut the mesh; nothing written
+  failed,      ///< the cut outline could not be capped (crossing constraints after rounding)
+};
+
+/// Splits closed meshes by planes.
+class MeshSlicer {
+ public:
+  /// Slices closed, outward `mesh` by `plane`: `below` receives the closed part where
+  /// dot(normal, x - point) < 0, `above` the rest; both are overwritten only when the result is `cut`.
+  /// Triangles keep their tags; cap triangles are tagged FaceTag::cut.
+  SliceOutcome slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above);
+
+  /// Why the last slice failed (empty unless it returned `failed`).
+  [[nodiscard]] const std::string& error() const { return error_; }
+
+ private:
+  enum Side : int { below_side = 0, above_side = 1 };
+  std::int32_t crossing(std::int32_t a, std::int32_t b);
+  std::int32_t index_in(Side side, std::int32_t ref);
+  void emit(Side side, std::int32_t r0, std::int32_t r1, std::int32_t r2, FaceTag tag);
+  void split_triangle(const Triangle& t, FaceTag tag);
+  bool add_cap();
+  [[nodiscard]] bool on_plane(std::int32_t ref) const {
+    return ref >= vertex_count_ || side_[static_cast<std::size_t>(ref)] == 0;
+  }
+  [[nodiscard]] const Vec3& position(std::int32_t ref) const {
+    return ref < vertex_count_ ? mesh_->vertices[static_cast<std::size_t>(ref)]
+                               : crossing_points_[static_cast<std::size_t>(ref - vertex_count_)];
+  }
+
+  // Per-slice state. A "ref" names a vertex of the sliced mesh (0..V-1) or a crossing point (V+k).
+  const Mesh* mesh_ = nullptr;
+  Plane plane_;
+  Mesh* halves_[2] = {nullptr, nullptr};
+  std::int32_t vertex_count_ = 0;
+  std::vector<std::int8_t> side_;                       // per vertex: -1, 0, +1 (exact)
+  std::vector<std::int32_t> index_[2];                  // per ref: index in each half, -1 if absent
+  std::vector<Vec3> crossing_points_;                   // per crossing ref - V
+  std::unordered_map<std::uint64_t, std::int32_t> crossing_of_edge_;  // undirected edge -> ref
+  std::unordered_map<std::uint64_t, int> outline_;      // lower half's in-plane half-edges, net count
+  std::vector<std::int32_t> cap_ref_;                   // cap point -> ref
+  std::unordered_map<std::int32_t, std::int32_t> cap_point_of_ref_;
+  std::vector<Vec2> cap_points_;
+  std::vector<CapEdge> cap_edges_;
+  std::string error_;
+};
+
+}  // namespace shatter

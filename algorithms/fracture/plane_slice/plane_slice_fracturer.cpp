@@ -1,0 +1,85 @@
+#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+
+#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_components.h"
+#include "algorithms/fracture/fracture_limits.h"
+#include "algorithms/fracture/plane_slice/mesh_slicer.h"
+#include "algorithms/fracture/recursive_slicing.h"
+
+#include <memory>
+
+namespace shatter {
+namespace {
+
+/// The slicing kernel of recursive_slicing.h over MeshSlicer.
+class SliceKernel {
+ public:
+  struct Piece {
+    Mesh mesh;
+    MassProperties mass;
+  };
+
+  [[nodiscard]] Vec3 centroid(const Piece& piece) const { return piece.mass.centroid; }
+
+  void split(const Piece& piece, const Plane& plane, std::vector<Piece>& below,
+             std::vector<Piece>& above) const {
+    Mesh lower;
+    Mesh upper;
+    const SliceOutcome outcome = slicer_.slice(piece.mesh, plane, lower, upper);
+    if (outcome == SliceOutcome::failed) ++failed_cuts_;
+    if (outcome != SliceOutcome::cut) return;
+    append_parts(std::move(lower), below);
+    append_parts(std::move(upper), above);
+  }
+
+  /// The connected parts of `mesh` as pieces.
+  static void append_parts(Mesh&& mesh, std::vector<Piece>& out) {
+    for (Mesh& part : connected_components(std::move(mesh))) {
+      MassProperties mass = mass_properties(part);
+      out.push_back({std::move(part), mass});
+    }
+  }
+
+  /// Cuts the slicer could not cap; those pieces were kept whole.
+  [[nodiscard]] int failed_cuts() const { return failed_cuts_; }
+
+ private:
+  mutable MeshSlicer slicer_;
+  mutable int failed_cuts_ = 0;
+};
+
+std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid) {
+  std::vector<SliceKernel::Piece> pieces;
+  SliceKernel::append_parts(Mesh(solid), pieces);
+  return pieces;
+}
+
+std::vector<Fragment> to_fragments(std::vector<SliceKernel::Piece>&& pieces) {
+  std::vector<Fragment> out;
+  out.reserve(pieces.size());
+  for (SliceKernel::Piece& p : pieces) out.push_back({std::move(p.mesh), p.mass});
+  return out;
+}
+
+}  // namespace
+
+Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
+                                                            const FractureParams& params) const {
+  if (Status s = check_fracture_params(params); !s) return s.error();
+  const SliceKernel kernel;
+  return to_fragments(slice_recursively(kernel, start_pieces(solid), params.fragments, params.seed));
+}
+
+Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid,
+                                                                      std::span<const Plane> planes) const {
+  if (Status s = check_planes(planes); !s) return s.error();
+  const SliceKernel kernel;
+  return to_fragments(slice_by_planes(kernel, start_pieces(solid), planes));
+}
+
+void register_plane_slice(FracturerRegistry& registry) {
+  registry.add("plane-slice", "recursive random plane cuts, constrained Delaunay caps (fast)",
+               [] { return std::make_unique<PlaneSliceFracturer>(); });
+}
+
+}  // namespace shatter

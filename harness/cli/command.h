@@ -1,0 +1,24 @@
+#pragma once
+/// The CLI's commands. Each command file adds one subcommand to the app and sets the exit code when
+/// it runs: 0 ok, 1 a gate failed, 2 bad input or usage (with one line on stderr).
+
+#include <CLI/CLI.hpp>
+
+#include <string_view>
+
+namespace shatter::cli {
+
+/// Exit codes of the CLI (DESIGN.md section 8).
+enum ExitCode : int { exit_ok = 0, exit_gate_failed = 1, exit_bad_input = 2 };
+
+/// Prints "shatterbench: error: <message>" on stderr (one line) and returns exit_bad_input.
+int fail_input(std::string_view message);
+
+/// `shatterbench list`.
+void add_list_command(CLI::App& app, int& exit_code);
+/// `shatterbench fracture`.
+void add_fracture_command(CLI::App& app, int& exit_code);
+/// `shatterbench table`.
+void add_table_command(CLI::App& app, int& exit_code);
+
+}  // namespace shatter::cli

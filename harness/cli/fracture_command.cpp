@@ -1,0 +1,85 @@
+#include "algorithms/fracture/fracture_limits.h"
+#include "algorithms/register_all.h"
+#include "harness/cases/load_solid.h"
+#include "harness/cli/command.h"
+#include "harness/metrics/fracture_metrics.h"
+#include "harness/results/fragment_writer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <iostream>
+#include <memory>
+#include <string>
+
+namespace shatter::cli {
+namespace {
+
+struct FractureOptions {
+  std::string mesh;
+  std::string algorithm = "plane-slice";
+  int fragments = 10;
+  std::uint64_t seed = 1;
+  std::string out;
+};
+
+int run_fracture(const FractureOptions& o) {
+  Result<Solid> solid = load_solid(o.mesh);
+  if (!solid) return fail_input(solid.error().message);
+  Result<std::unique_ptr<Fracturer>> fracturer = registries().fracturers.create(o.algorithm);
+  if (!fracturer) return fail_input("--algo: " + fracturer.error().message);
+
+  FractureParams params;
+  params.fragments = o.fragments;
+  params.seed = o.seed;
+  const auto start = std::chrono::steady_clock::now();
+  Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(solid->mesh, params);
+  const auto stop = std::chrono::steady_clock::now();
+  if (!fragments) return fail_input(fragments.error().message);
+  const double time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
+
+  const FractureMetrics m = fracture_metrics(solid->mesh, solid->mass, *fragments, o.fragments);
+  if (!o.out.empty()) {
+    if (Status s = write_fragments(o.out, *fragments); !s) return fail_input(s.error().message);
+  }
+  const nlohmann::ordered_json out = {
+      {"algorithm", o.algorithm},
+      {"fragments", fragments->size()},
+      {"requested", o.fragments},
+      {"seed", o.seed},
+      {"time_ms", time_ms},
+      {"input",
+       {{"file", o.mesh},
+        {"triangles", solid->mesh.triangle_count()},
+        {"volume", solid->mass.volume},
+        {"area", solid->area},
+        {"flipped", solid->report.flipped}}},
+      {"metrics",
+       {{"volume_error", m.volume_error},
+        {"all_closed", m.all_closed},
+        {"partition_error", m.partition_error},
+        {"partition_samples", m.partition_samples},
+        {"area_error", m.area_error},
+        {"min_fragment_volume", m.min_fragment_volume}}},
+  };
+  std::cout << out.dump(2) << '\n';
+  return exit_ok;
+}
+
+}  // namespace
+
+void add_fracture_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<FractureOptions>();
+  CLI::App* cmd = app.add_subcommand("fracture", "Fracture one mesh and print time and error figures as JSON");
+  cmd->add_option("--mesh", options->mesh, "Input solid (.off or .obj), closed and oriented")->required();
+  cmd->add_option("--algo", options->algorithm, "Fracturer name (see `shatterbench list`)")
+      ->capture_default_str();
+  cmd->add_option("--fragments", options->fragments, "Requested fragment count")
+      ->check(CLI::Range(1, kMaxFragments))
+      ->capture_default_str();
+  cmd->add_option("--seed", options->seed, "Random seed (same seed, same fragments)")->capture_default_str();
+  cmd->add_option("--out", options->out, "Folder for fragment_NNN.obj (nothing is written without it)");
+  cmd->callback([options, &exit_code] { exit_code = run_fracture(*options); });
+}
+
+}  // namespace shatter::cli

@@ -1,0 +1,19 @@
+#include "algorithms/register_all.h"
+#include "harness/cli/command.h"
+
+#include <fmt/core.h>
+
+namespace shatter::cli {
+
+void add_list_command(CLI::App& app, int& exit_code) {
+  CLI::App* cmd = app.add_subcommand("list", "List the registered fracturers, stress models and built-in cases");
+  cmd->callback([&exit_code] {
+    const Registries& r = registries();
+    fmt::print("fracturers:\n");
+    for (const std::string& name : r.fracturers.names())
+      fmt::print("  {:<18} {}\n", name, r.fracturers.description(name));
+    exit_code = exit_ok;
+  });
+}
+
+}  // namespace shatter::cli

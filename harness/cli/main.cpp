@@ -1,0 +1,35 @@
+/// shatterbench: benchmark and regression harness for real-time destruction algorithms.
+
+#include "harness/cli/command.h"
+
+#include <cstdio>
+#include <exception>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace shatter::cli;
+  CLI::App app{"shatterbench: benchmark and regression harness for real-time destruction algorithms",
+               "shatterbench"};
+  app.require_subcommand(1);
+  int exit_code = exit_ok;
+  add_list_command(app, exit_code);
+  add_fracture_command(app, exit_code);
+  add_table_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return exit_ok;
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return exit_ok;
+  } catch (const CLI::ParseError& e) {
+    // Subcommand --help arrives here too (CLI11 raises CallForHelp from the subcommand).
+    if (e.get_exit_code() == 0) return app.exit(e);
+    return fail_input(e.what());
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "shatterbench: internal error: %s\n", e.what());
+    return 3;
+  }
+  return exit_code;
+}

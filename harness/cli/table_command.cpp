@@ -1,0 +1,112 @@
+#include "algorithms/fracture/fracture_limits.h"
+#include "algorithms/register_all.h"
+#include "harness/cases/load_solid.h"
+#include "harness/cli/command.h"
+#include "harness/metrics/fracture_metrics.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace shatter::cli {
+namespace {
+
+struct TableOptions {
+  std::vector<std::string> meshes;
+  std::vector<std::string> algorithms;
+  std::vector<int> fragments = {5, 25, 100};
+  int repetitions = 3;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
+}
+
+int run_table(TableOptions o) {
+  const Registries& r = registries();
+  if (o.algorithms.empty()) o.algorithms = r.fracturers.names();
+  std::vector<std::unique_ptr<Fracturer>> fracturers;
+  for (const std::string& name : o.algorithms) {
+    auto f = r.fracturers.create(name);
+    if (!f) return fail_input("--algo: " + f.error().message);
+    fracturers.push_back(std::move(*f));
+  }
+  std::vector<Solid> solids;
+  for (const std::string& path : o.meshes) {
+    Result<Solid> s = load_solid(path);
+    if (!s) return fail_input(s.error().message);
+    solids.push_back(std::move(*s));
+  }
+
+  fmt::print("| mesh | triangles | fracturer | requested | fragments | median ms | x fastest | volume error "
+             "| partition error | area error | closed | min volume |\n");
+  fmt::print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
+  for (std::size_t m = 0; m < solids.size(); ++m) {
+    const Solid& solid = solids[m];
+    const std::string mesh_name = std::filesystem::path(o.meshes[m]).filename().string();
+    for (int n : o.fragments) {
+      struct Row {
+        std::string algorithm;
+        double ms;
+        std::size_t count;
+        FractureMetrics metrics;
+      };
+      std::vector<Row> rows;
+      for (const auto& fracturer : fracturers) {
+        std::vector<double> times;
+        std::vector<Fragment> first;
+        for (int rep = 0; rep < o.repetitions; ++rep) {
+          FractureParams params;
+          params.fragments = n;
+          params.seed = static_cast<std::uint64_t>(rep + 1);
+          const auto t0 = std::chrono::steady_clock::now();
+          auto fragments = fracturer->fracture(solid.mesh, params);
+          const auto t1 = std::chrono::steady_clock::now();
+          if (!fragments) return fail_input(std::string(fracturer->name()) + ": " + fragments.error().message);
+          times.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+          if (rep == 0) first = std::move(*fragments);
+        }
+        rows.push_back({std::string(fracturer->name()), median(times), first.size(),
+                        fracture_metrics(solid.mesh, solid.mass, first, n)});
+      }
+      double fastest = rows.front().ms;
+      for (const Row& row : rows) fastest = std::min(fastest, row.ms);
+      for (const Row& row : rows)
+        fmt::print("| {} | {} | {} | {} | {} | {:.3f} | {:.1f} | {:.2e} | {:.4f} | {:.2e} | {} | {:.3e} |\n",
+                   mesh_name, solid.mesh.triangle_count(), row.algorithm, n, row.count, row.ms,
+                   fastest > 0 ? row.ms / fastest : 1.0, row.metrics.volume_error, row.metrics.partition_error,
+                   row.metrics.area_error, row.metrics.all_closed ? "yes" : "NO", row.metrics.min_fragment_volume);
+    }
+  }
+  fmt::print("\nmedian of {} repetitions (seeds 1..{}); error figures of seed 1; x fastest = median / fastest "
+             "median in the same row group\n",
+             o.repetitions, o.repetitions);
+  return exit_ok;
+}
+
+}  // namespace
+
+void add_table_command(CLI::App& app, int& exit_code) {
+  auto options = std::make_shared<TableOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "table", "Fracture meshes with every fracturer and print a Markdown table of time and error figures");
+  cmd->add_option("--mesh", options->meshes, "Input solids (.off or .obj)")->required();
+  cmd->add_option("--algo", options->algorithms, "Fracturers (default: every registered one)");
+  cmd->add_option("--fragments", options->fragments, "Requested fragment counts")
+      ->check(CLI::Range(1, kMaxFragments))
+      ->capture_default_str();
+  cmd->add_option("--repetitions", options->repetitions, "Runs per cell, seeds 1..R; the median time is shown")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->callback([options, &exit_code] { exit_code = run_table(*options); });
+}
+
+}  // namespace shatter::cli

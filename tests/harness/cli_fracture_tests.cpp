@@ -1,0 +1,123 @@
+// The `fracture` and `list` commands: the JSON contract, the written files, and the exit-2 contract on
+// bad input (one line on stderr naming the problem, no output files).
+
+#include "algorithms/core/mesh_io.h"
+#include "algorithms/core/primitives.h"
+#include "tests/support/cli_runner.h"
+#include "tests/support/mesh_fixtures.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+using namespace shatter;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / "shatter_cli_tests" / name;
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+void require_bad_input(const test::CliRun& run, const std::string& mentions) {
+  CHECK(run.exit_code == 2);
+  CHECK(test::line_count(run.err) == 1);
+  CHECK_THAT(run.err, Catch::Contains(mentions, Catch::CaseSensitive::No));
+  CHECK(run.out.empty());
+}
+
+}  // namespace
+
+TEST_CASE("cli: fracture prints the contract JSON and writes the fragments", "[cli]") {
+  const fs::path dir = scratch("fracture_ok");
+  REQUIRE(write_off(make_sphere(1.0, 16, 8), dir / "sphere.off").ok());
+  const auto run = test::run_cli("fracture --mesh " + (dir / "sphere.off").string() +
+                                 " --algo plane-slice --fragments 6 --seed 3 --out " + (dir / "frags").string());
+  REQUIRE(run.exit_code == 0);
+  const auto j = nlohmann::json::parse(run.out);
+  CHECK(j.at("algorithm") == "plane-slice");
+  const int n = j.at("fragments");
+  CHECK(n >= 6);
+  CHECK(j.at("time_ms").get<double>() >= 0.0);
+  CHECK(j.at("input").at("triangles").get<int>() > 0);
+  CHECK(j.at("input").at("volume").get<double>() > 0.0);
+  CHECK(j.at("input").at("area").get<double>() > 0.0);
+  const auto& m = j.at("metrics");
+  CHECK(m.at("volume_error").get<double>() <= 1e-9);
+  CHECK(m.at("all_closed").get<bool>());
+  CHECK(m.at("partition_error").get<double>() == 0.0);
+  CHECK(m.at("area_error").get<double>() <= 1e-9);
+  CHECK(m.at("min_fragment_volume").get<double>() > 0.0);
+  int files = 0;
+  for (const auto& e : fs::directory_iterator(dir / "frags")) files += e.path().extension() == ".obj";
+  CHECK(files == n);
+  CHECK(fs::exists(dir / "frags" / "fragment_000.obj"));
+  auto back = read_obj(dir / "frags" / "fragment_000.obj");
+  REQUIRE(back.ok());
+  CHECK(back->triangle_count() > 0);
+}
+
+TEST_CASE("cli: without --out nothing is written", "[cli]") {
+  const fs::path dir = scratch("fracture_no_out");
+  REQUIRE(write_off(make_box(Vec3(1, 1, 1)), dir / "box.off").ok());
+  const auto run = test::run_cli("fracture --mesh " + (dir / "box.off").string() + " --fragments 3");
+  CHECK(run.exit_code == 0);
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) ++entries;
+  CHECK(entries == 1);
+}
+
+TEST_CASE("cli: list names the fracturers", "[cli]") {
+  const auto run = test::run_cli("list");
+  CHECK(run.exit_code == 0);
+  CHECK_THAT(run.out, Catch::Contains("plane-slice"));
+  CHECK_THAT(run.out, Catch::Contains("cgal-clip"));
+}
+
+TEST_CASE("cli: bad input exits 2 with one line and no output files", "[cli]") {
+  const fs::path dir = scratch("fracture_bad");
+  const fs::path out = dir / "frags";
+  const std::string out_flag = " --out " + out.string();
+
+  SECTION("a non-closed mesh") {
+    if (!test::have_meshes()) return;
+    require_bad_input(test::run_cli("fracture --mesh " + (test::mesh_dir() / "mushroom.off").string() +
+                                    " --fragments 5" + out_flag),
+                      "not closed");
+  }
+  SECTION("a truncated file") {
+    REQUIRE(write_off(make_sphere(1.0, 16, 8), dir / "whole.off").ok());
+    const std::string text = test::slurp(dir / "whole.off");
+    std::ofstream(dir / "cut.off") << text.substr(0, text.size() / 2);
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "cut.off").string() + " --fragments 5" + out_flag),
+                      "cut.off");
+  }
+  SECTION("NaN coordinates") {
+    std::ofstream(dir / "nan.off") << "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 nan\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "nan.off").string() + " --fragments 5" + out_flag),
+                      "finite");
+  }
+  SECTION("zero fragments") {
+    REQUIRE(write_off(make_box(Vec3(1, 1, 1)), dir / "box.off").ok());
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "box.off").string() + " --fragments 0" + out_flag),
+                      "fragments");
+  }
+  SECTION("an unknown fracturer") {
+    REQUIRE(write_off(make_box(Vec3(1, 1, 1)), dir / "box.off").ok());
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "box.off").string() + " --algo nope" + out_flag),
+                      "plane-slice");
+  }
+  SECTION("a missing file") {
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "absent.off").string() + out_flag), "absent.off");
+  }
+  SECTION("an unknown flag") {
+    require_bad_input(test::run_cli("fracture --mesh x.off --frobnicate 3"), "frobnicate");
+  }
+  CHECK_FALSE(fs::exists(out));
+  for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().rfind(".frags", 0) != 0);
+}
