@@ -1,0 +1,113 @@
+// Google Benchmark: the fracture kernels side by side (plane-slice and its exact reference cgal-clip)
+// on real meshes of about 1k, 10k and 100k triangles: one plane slice, and recursive fracture into 5,
+// 25 and 100 fragments. Error figures ride along as counters, so every time has its accuracy next to it.
+//
+//   build/bin/shatter_benchmarks [--benchmark_filter=...] [--benchmark_repetitions=5]
+//
+// Meshes come from $SHATTER_MESH_DIR or <source>/data/meshes (scripts/fetch-meshes).
+
+#include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
+#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+#include "algorithms/register_all.h"
+#include "harness/cases/load_solid.h"
+#include "harness/metrics/fracture_metrics.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace shatter;
+
+namespace {
+
+std::filesystem::path mesh_dir() {
+  if (const char* env = std::getenv("SHATTER_MESH_DIR")) return env;
+  return std::filesystem::path(SHATTER_SOURCE_DIR) / "data" / "meshes";
+}
+
+/// The meshes of the size ladder: about 1k, 5k, 10k, 50k and 100k triangles.
+const std::vector<std::string>& ladder() {
+  static const std::vector<std::string> names = {"sphere966.off", "elephant.off", "homer.off", "armadillo.off",
+                                                 "refined_elephant.off"};
+  return names;
+}
+
+void slice_once(benchmark::State& state, const Solid& solid, const std::string& algorithm) {
+  const Plane plane{solid.mass.centroid, Vec3(0.3, 0.5, 0.8).normalized()};
+  const std::span<const Plane> planes(&plane, 1);
+  std::vector<Fragment> fragments;
+  for (auto _ : state) {
+    auto out = algorithm == "cgal-clip" ? CgalClipFracturer().fracture_by_planes(solid.mesh, planes)
+                                        : PlaneSliceFracturer().fracture_by_planes(solid.mesh, planes);
+    if (!out) {
+      state.SkipWithError(out.error().message.c_str());
+      return;
+    }
+    fragments = std::move(*out);
+    benchmark::DoNotOptimize(fragments.data());
+  }
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, 2);
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
+  state.counters["fragments"] = static_cast<double>(fragments.size());
+  state.counters["volume_error"] = m.volume_error;
+  state.counters["partition_error"] = m.partition_error;
+}
+
+void fracture_into(benchmark::State& state, const Solid& solid, const std::string& algorithm, int n) {
+  auto fracturer = registries().fracturers.create(algorithm);
+  FractureParams params;
+  params.fragments = n;
+  params.seed = 1;
+  std::vector<Fragment> fragments;
+  for (auto _ : state) {
+    auto out = (*fracturer)->fracture(solid.mesh, params);
+    if (!out) {
+      state.SkipWithError(out.error().message.c_str());
+      return;
+    }
+    fragments = std::move(*out);
+    benchmark::DoNotOptimize(fragments.data());
+  }
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, n);
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
+  state.counters["fragments"] = static_cast<double>(fragments.size());
+  state.counters["volume_error"] = m.volume_error;
+  state.counters["partition_error"] = m.partition_error;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  static std::vector<std::pair<std::string, Solid>> solids;
+  for (const std::string& name : ladder()) {
+    Result<Solid> solid = load_solid(mesh_dir() / name);
+    if (!solid) {
+      std::cerr << "shatter_benchmarks: skipping " << name << ": " << solid.error().message << "\n";
+      continue;
+    }
+    solids.emplace_back(name, std::move(*solid));
+  }
+  for (const auto& [name, solid] : solids) {
+    for (const char* algorithm : {"plane-slice", "cgal-clip"}) {
+      const Solid* s = &solid;
+      const std::string algo = algorithm;
+      benchmark::RegisterBenchmark(("slice/" + name + "/" + algo).c_str(),
+                                   [s, algo](benchmark::State& st) { slice_once(st, *s, algo); })
+          ->Unit(benchmark::kMillisecond);
+      for (int n : {5, 25, 100}) {
+        benchmark::RegisterBenchmark(("fracture/" + name + "/" + algo + "/" + std::to_string(n)).c_str(),
+                                     [s, algo, n](benchmark::State& st) { fracture_into(st, *s, algo, n); })
+            ->Unit(benchmark::kMillisecond);
+      }
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
