@@ -8,6 +8,7 @@
 /// so closedness and orientation are checked on the index structure, not on coordinates.
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cstdint>

@@ -1,0 +1,100 @@
+#include "harness/metrics/fracture_metrics.h"
+
+#include "algorithms/core/mesh_validation.h"
+#include "algorithms/core/random.h"
+#include "algorithms/core/winding_number.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace shatter {
+namespace {
+
+// |value - reference| / reference, guarded: 0 without a positive reference, the largest finite
+// double when the value itself is not finite (a broken fragment must not read as a perfect one).
+double relative_error(double value, double reference) {
+  if (!std::isfinite(value)) return std::numeric_limits<double>::max();
+  if (!(reference > 0.0) || !std::isfinite(reference)) return 0.0;
+  const double error = std::abs(value - reference) / reference;
+  return std::isfinite(error) ? error : std::numeric_limits<double>::max();
+}
+
+bool fragment_is_valid(const Fragment& fragment) {
+  const double volume = fragment.mass.volume;
+  return !fragment.mesh.empty() && all_finite(fragment.mesh) && is_closed_and_oriented(fragment.mesh) &&
+         std::isfinite(volume) && volume > 0.0;
+}
+
+struct PartitionResult {
+  int samples = 0;
+  int errors = 0;
+};
+
+// Samples up to `wanted` points inside `input` and counts those inside zero or several fragments.
+PartitionResult sample_partition(const Mesh& input, std::span<const Fragment> fragments,
+                                 const FractureMetricsOptions& options) {
+  PartitionResult result;
+  const int wanted = options.partition_samples;
+  if (wanted <= 0 || input.empty()) return result;
+
+  const WindingNumberQuery inside_input(input);
+  const Aabb& box = inside_input.bounds();
+  std::vector<WindingNumberQuery> inside_fragment;
+  inside_fragment.reserve(fragments.size());
+  for (const Fragment& fragment : fragments) inside_fragment.emplace_back(fragment.mesh);
+
+  SplitMix64 rng(options.seed);
+  const long long max_draws = static_cast<long long>(wanted) * std::max(1, options.max_draws_per_sample);
+  for (long long draw = 0; draw < max_draws && result.samples < wanted; ++draw) {
+    const Vec3 p = rng.point_in(box.min, box.max);
+    // An input made of overlapping shells covers a point several times; the fragments must cover it
+    // as often as the input does (once, for an ordinary solid).
+    const long expected = std::lround(inside_input(p));
+    if (expected < 1) continue;
+    ++result.samples;
+    long containing = 0;
+    for (const WindingNumberQuery& fragment : inside_fragment) {
+      // Culling: outside a closed fragment's box the point is outside the fragment.
+      if (!fragment.bounds().contains(p)) continue;
+      if (fragment(p) > 0.5 && ++containing > expected) break;  // already too many
+    }
+    if (containing != expected) ++result.errors;
+  }
+  return result;
+}
+
+}  // namespace
+
+FractureMetrics fracture_metrics(const Mesh& input, const MassProperties& input_mass,
+                                 std::span<const Fragment> fragments, int requested,
+                                 const FractureMetricsOptions& options) {
+  assert(options.partition_samples >= 0);
+  FractureMetrics metrics;
+  metrics.fragment_count = static_cast<int>(fragments.size());
+  metrics.requested = requested;
+
+  double volume_sum = 0.0;
+  double surface_sum = 0.0;
+  double min_volume = std::numeric_limits<double>::infinity();
+  for (const Fragment& fragment : fragments) {
+    volume_sum += fragment.mass.volume;
+    surface_sum += tagged_area(fragment.mesh, FaceTag::surface);
+    min_volume = std::min(min_volume, fragment.mass.volume);
+    metrics.all_closed = metrics.all_closed && fragment_is_valid(fragment);
+  }
+  metrics.volume_error = relative_error(volume_sum, input_mass.volume);
+  metrics.area_error = relative_error(surface_sum, surface_area(input));
+  // std::min skips NaN volumes (comparisons with NaN are false); all-NaN leaves infinity.
+  metrics.min_fragment_volume = fragments.empty() || !std::isfinite(min_volume) ? 0.0 : min_volume;
+
+  const PartitionResult partition = sample_partition(input, fragments, options);
+  metrics.partition_samples = partition.samples;
+  metrics.partition_error =
+      partition.samples > 0 ? static_cast<double>(partition.errors) / partition.samples : 0.0;
+  return metrics;
+}
+
+}  // namespace shatter
