@@ -1,4 +1,5 @@
 #include "algorithms/register_all.h"
+#include "harness/cases/case_library.h"
 #include "harness/cli/command.h"
 
 #include <fmt/core.h>
@@ -12,6 +13,8 @@ void add_list_command(CLI::App& app, int& exit_code) {
     fmt::print("fracturers:\n");
     for (const std::string& name : r.fracturers.names())
       fmt::print("  {:<18} {}\n", name, r.fracturers.description(name));
+    fmt::print("built-in cases:\n");
+    for (const BuiltinCase& c : list_builtin_cases()) fmt::print("  {:<18} {}\n", c.name, c.description);
     exit_code = exit_ok;
   });
 }

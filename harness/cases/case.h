@@ -1,0 +1,152 @@
+#pragma once
+/// A benchmark case: the solid, its material, supports, pre-fracture, impacts and run settings, as read
+/// from a case file (DESIGN.md section 9; every key is documented in cases/README.md).
+///
+/// Design note: a Case is plain data with the defaults of the case-file contract, checked once by the
+/// loader (ranges, finiteness, required keys, unknown keys). Algorithm names (fracturers, stress
+/// models) are kept as strings and NOT checked here: the loader stays independent of the registries,
+/// and the caller that creates the algorithms reports an unknown name with the list of known ones.
+/// The mesh is only described (MeshSpec); case_mesh.h builds and validates it.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/plane.h"
+#include "algorithms/fracture/fracturer.h"
+#include "algorithms/stress/material.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <variant>
+#include <vector>
+
+namespace shatter {
+
+/// `mesh.box`: an axis-aligned box.
+struct BoxSpec {
+  Vec3 size = Vec3::Ones();          ///< edge lengths, m, each > 0
+  Vec3 center = Vec3::Zero();        ///< m
+};
+
+/// `mesh.sphere`: a UV sphere.
+struct SphereSpec {
+  double radius = 1.0;               ///< m, > 0
+  Vec3 center = Vec3::Zero();        ///< m
+  int segments = 32;                 ///< around the axis, >= 3
+  int rings = 16;                    ///< pole to pole, >= 2
+};
+
+/// `mesh.cylinder`: a cylinder along z.
+struct CylinderSpec {
+  double radius = 1.0;               ///< m, > 0
+  double height = 1.0;               ///< m, > 0
+  Vec3 center = Vec3::Zero();        ///< m
+  int segments = 32;                 ///< around the axis, >= 3
+};
+
+/// `mesh.torus`: a torus around the z axis.
+struct TorusSpec {
+  double major_radius = 1.0;         ///< axis to tube centre, m, > minor_radius
+  double minor_radius = 0.25;        ///< tube radius, m, > 0
+  Vec3 center = Vec3::Zero();        ///< m
+  int major_segments = 32;           ///< around the axis, >= 3
+  int minor_segments = 16;           ///< around the tube, >= 3
+};
+
+/// `mesh.tube`: a thick tube along z (a cylinder with a coaxial hole).
+struct TubeSpec {
+  double inner_radius = 0.5;         ///< m, > 0, < outer_radius
+  double outer_radius = 1.0;         ///< m
+  double height = 1.0;               ///< m, > 0
+  Vec3 center = Vec3::Zero();        ///< m
+  int segments = 32;                 ///< around the axis, >= 3
+};
+
+/// `mesh.file`: a mesh file, transformed as p' = R (scale p) + translate.
+struct MeshFileSpec {
+  std::string file;                  ///< as written in the case file
+  std::filesystem::path path;        ///< resolved path of an existing file
+  double scale = 1.0;                ///< uniform, > 0
+  Vec3 rotate_deg = Vec3::Zero();    ///< rotations about x, then y, then z, degrees
+  Vec3 translate = Vec3::Zero();     ///< m
+};
+
+/// What the case's solid is made from.
+using MeshSpec = std::variant<BoxSpec, SphereSpec, CylinderSpec, TorusSpec, TubeSpec, MeshFileSpec>;
+
+/// `prefracture`: either a fracturer run (`fracturer`, `fragments`, `seed`) or explicit `planes`.
+struct PrefractureSpec {
+  std::string fracturer = "plane-slice";  ///< registered fracturer name (unchecked here)
+  int fragments = 10;                     ///< requested fragments, >= 1
+  std::uint64_t seed = 1;                 ///< random seed
+  std::vector<Plane> planes;              ///< explicit cuts; when non-empty the three fields above are unused
+
+  /// True when the pre-fracture is the explicit list of planes.
+  [[nodiscard]] bool explicit_planes() const { return !planes.empty(); }
+};
+
+/// One entry of `impacts`: a hit at a frame.
+struct ImpactEvent {
+  int frame = 1;                     ///< frame index of the hit, 0 <= frame < Case::frames
+  Impact impact;                     ///< point (m), unit direction, impulse (N s, >= 0), radius (m, >= 0)
+};
+
+/// `runtime`: the fracture done when an impact happens.
+struct RuntimeSpec {
+  std::string fracturer = "voronoi"; ///< registered fracturer name (unchecked here)
+  int fragments = 10;                ///< requested fragments of the hit piece, >= 1
+};
+
+/// `stress`: the stress model and optional solver settings.
+struct StressSpec {
+  std::string model = "von-mises";            ///< registered stress model name (unchecked here)
+  std::optional<double> tolerance;            ///< relative residual of the static solve, > 0; solver default if unset
+  std::optional<int> max_iterations;          ///< iterations of the solve, >= 1; solver default if unset
+};
+
+/// `grid`: the fragment counts swept by `shatterbench grid`.
+struct GridSpec {
+  std::vector<int> prefracture = {10, 20, 30, 40, 50, 60, 70, 80, 90, 100};  ///< pre-fracture counts, each >= 1
+  std::vector<int> runtime = {5, 10, 15, 20, 25};                             ///< runtime counts, each >= 1
+};
+
+/// `needs`: the pipeline results the case asks for; the pipeline runs the stages that lead to them.
+struct Needs {
+  bool fragments = true;             ///< pre-fracture and runtime fracture
+  bool bonds = true;                 ///< the support graph
+  bool stress = true;                ///< the stress solve and propagation
+  bool colliders = true;             ///< convex hulls and mass properties for physics
+  bool physics = true;               ///< the rigid-body steps
+
+  /// The names of the needs that are set, in contract order.
+  [[nodiscard]] std::vector<std::string> names() const {
+    std::vector<std::string> out;
+    if (fragments) out.emplace_back("fragments");
+    if (bonds) out.emplace_back("bonds");
+    if (stress) out.emplace_back("stress");
+    if (colliders) out.emplace_back("colliders");
+    if (physics) out.emplace_back("physics");
+    return out;
+  }
+};
+
+/// A loaded, checked case. Units are SI.
+struct Case {
+  std::string name;                        ///< `name`; defaults to the case file's stem
+  std::string description;                 ///< `description`, one line; may be empty
+  std::filesystem::path source;            ///< the case file it was read from (for messages)
+  MeshSpec mesh;                           ///< `mesh` (required)
+  Material material;                       ///< `material`; every field optional
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);    ///< m/s^2
+  std::vector<Aabb> anchors;               ///< `anchors[i].box`, m; a fragment overlapping one is fixed
+  PrefractureSpec prefracture;             ///< `prefracture`
+  std::vector<ImpactEvent> impacts;        ///< `impacts`, in file order
+  RuntimeSpec runtime;                     ///< `runtime`
+  StressSpec stress;                       ///< `stress`
+  int frames = 300;                        ///< frames simulated per run, >= 1 (1/60 s each)
+  double budget_ms = 33.3;                 ///< frame-time budget, ms, > 0
+  GridSpec grid;                           ///< `grid`
+  Needs needs;                             ///< `needs`
+};
+
+}  // namespace shatter

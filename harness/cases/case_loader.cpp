@@ -1,0 +1,253 @@
+#include "harness/cases/case_loader.h"
+
+#include "algorithms/fracture/fracture_limits.h"
+#include "harness/cases/case_mesh.h"
+#include "harness/cases/json_reader.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+namespace shatter {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+/// Reads a one-line string (no line breaks); `non_empty` refuses "".
+void read_line(JsonReader& r, const json& obj, std::string_view key, bool non_empty, std::string& out) {
+  if (!r.read(obj, "", key, out)) return;
+  if (out.find_first_of("\r\n") != std::string::npos) r.fail(key, "must be one line");
+  if (non_empty && out.empty()) r.fail(key, "must not be empty");
+}
+
+/// Reads a fragment count: an integer in [1, kMaxFragments].
+void read_fragments(JsonReader& r, const json& obj, std::string_view path, std::string_view key, int& out) {
+  if (!r.read(obj, path, key, out)) return;
+  const std::string at = key_path(path, key);
+  r.at_least(at, out, 1) && r.at_most(at, out, kMaxFragments);
+}
+
+/// Reads a registered-algorithm name (kept as a string; the caller checks it against its registry).
+void read_name(JsonReader& r, const json& obj, std::string_view path, std::string_view key, std::string& out) {
+  if (r.read(obj, path, key, out) && out.empty()) r.fail(key_path(path, key), "must not be empty");
+}
+
+Material read_material(JsonReader& r, const json& v) {
+  Material m;
+  if (!r.object(v, "material", {"density", "young_modulus", "poisson_ratio", "tensile_strength",
+                                "compressive_strength", "shear_strength"}))
+    return m;
+  const auto positive = [&](std::string_view key, double& field) {
+    if (r.read(v, "material", key, field)) r.positive(key_path("material", key), field);
+  };
+  positive("density", m.density);
+  positive("young_modulus", m.young_modulus);
+  if (r.read(v, "material", "poisson_ratio", m.poisson_ratio) && !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
+    r.fail("material.poisson_ratio", fmt::format("must be in (-1, 0.5), got {}", m.poisson_ratio));
+  positive("tensile_strength", m.tensile_strength);
+  positive("compressive_strength", m.compressive_strength);
+  positive("shear_strength", m.shear_strength);
+  return m;
+}
+
+std::vector<Aabb> read_anchors(JsonReader& r, const json& v) {
+  std::vector<Aabb> anchors;
+  if (!r.array(v, "anchors")) return anchors;
+  for (std::size_t i = 0; i < v.size() && !r.failed(); ++i) {
+    const std::string at = index_path("anchors", i);
+    if (!r.object(v[i], at, {"box"})) break;
+    const std::string box_at = key_path(at, "box");
+    if (!v[i].contains("box")) {
+      r.fail(box_at, "missing required key");
+      break;
+    }
+    const json& box = v[i]["box"];
+    Aabb a;
+    if (!r.object(box, box_at, {"min", "max"})) break;
+    r.read_required(box, box_at, "min", a.min);
+    r.read_required(box, box_at, "max", a.max);
+    if (!r.failed() && !(a.min.array() <= a.max.array()).all())
+      r.fail(box_at, fmt::format("min must be <= max on every axis, got min [{}] max [{}]",
+                                 fmt::join(a.min, ", "), fmt::join(a.max, ", ")));
+    anchors.push_back(a);
+  }
+  return anchors;
+}
+
+PrefractureSpec read_prefracture(JsonReader& r, const json& v) {
+  PrefractureSpec p;
+  if (!r.object(v, "prefracture", {"fracturer", "fragments", "seed", "planes"})) return p;
+  if (v.contains("planes")) {
+    for (const char* key : {"fracturer", "fragments", "seed"})
+      if (v.contains(key)) {
+        r.fail("prefracture", fmt::format("\"{}\" and \"planes\" are exclusive: give one", key));
+        return p;
+      }
+    const json& planes = v["planes"];
+    if (!r.array(planes, "prefracture.planes")) return p;
+    if (planes.empty()) r.fail("prefracture.planes", "must list at least one plane");
+    for (std::size_t i = 0; i < planes.size() && !r.failed(); ++i) {
+      const std::string at = index_path("prefracture.planes", i);
+      Plane plane;
+      if (!r.object(planes[i], at, {"point", "normal"})) break;
+      r.read_required(planes[i], at, "point", plane.point);
+      if (r.read_required(planes[i], at, "normal", plane.normal)) r.non_zero(key_path(at, "normal"), plane.normal);
+      p.planes.push_back(plane);
+    }
+    return p;
+  }
+  read_name(r, v, "prefracture", "fracturer", p.fracturer);
+  read_fragments(r, v, "prefracture", "fragments", p.fragments);
+  r.read(v, "prefracture", "seed", p.seed);
+  return p;
+}
+
+/// Unit vector along `v` (non-zero, finite), safe against underflow of tiny components.
+Vec3 unit(const Vec3& v) {
+  const Vec3 scaled = v / v.cwiseAbs().maxCoeff();
+  return scaled.normalized();
+}
+
+std::vector<ImpactEvent> read_impacts(JsonReader& r, const json& v, int frames) {
+  std::vector<ImpactEvent> impacts;
+  if (!r.array(v, "impacts")) return impacts;
+  for (std::size_t i = 0; i < v.size() && !r.failed(); ++i) {
+    const std::string at = index_path("impacts", i);
+    const json& item = v[i];
+    ImpactEvent e;
+    if (!r.object(item, at, {"frame", "point", "direction", "impulse", "radius"})) break;
+    if (r.read_required(item, at, "frame", e.frame)) {
+      r.at_least(key_path(at, "frame"), e.frame, 0) && r.at_most(key_path(at, "frame"), e.frame, frames - 1);
+    }
+    r.read_required(item, at, "point", e.impact.point);
+    if (r.read_required(item, at, "direction", e.impact.direction) &&
+        r.non_zero(key_path(at, "direction"), e.impact.direction))
+      e.impact.direction = unit(e.impact.direction);
+    if (r.read_required(item, at, "impulse", e.impact.impulse))
+      r.non_negative(key_path(at, "impulse"), e.impact.impulse);
+    if (r.read(item, at, "radius", e.impact.radius)) r.non_negative(key_path(at, "radius"), e.impact.radius);
+    impacts.push_back(e);
+  }
+  return impacts;
+}
+
+RuntimeSpec read_runtime(JsonReader& r, const json& v) {
+  RuntimeSpec s;
+  if (!r.object(v, "runtime", {"fracturer", "fragments"})) return s;
+  read_name(r, v, "runtime", "fracturer", s.fracturer);
+  read_fragments(r, v, "runtime", "fragments", s.fragments);
+  return s;
+}
+
+StressSpec read_stress(JsonReader& r, const json& v) {
+  StressSpec s;
+  if (!r.object(v, "stress", {"model", "tolerance", "max_iterations"})) return s;
+  read_name(r, v, "stress", "model", s.model);
+  double tolerance = 0.0;
+  if (r.read(v, "stress", "tolerance", tolerance) && r.positive("stress.tolerance", tolerance)) s.tolerance = tolerance;
+  int iterations = 0;
+  if (r.read(v, "stress", "max_iterations", iterations) && r.at_least("stress.max_iterations", iterations, 1))
+    s.max_iterations = iterations;
+  return s;
+}
+
+/// Reads a non-empty list of distinct fragment counts.
+void read_counts(JsonReader& r, const json& obj, std::string_view key, std::vector<int>& out) {
+  const std::string at = key_path("grid", key);
+  if (!obj.contains(key) || !r.array(obj[std::string(key)], at)) return;
+  const json& list = obj[std::string(key)];
+  if (list.empty()) r.fail(at, "must list at least one count");
+  std::vector<int> counts;
+  for (std::size_t i = 0; i < list.size() && !r.failed(); ++i) {
+    int n = 0;
+    const std::string item = index_path(at, i);
+    if (!r.convert(list[i], item, n) || !r.at_least(item, n, 1) || !r.at_most(item, n, kMaxFragments)) break;
+    if (std::find(counts.begin(), counts.end(), n) != counts.end()) r.fail(item, fmt::format("duplicate count {}", n));
+    counts.push_back(n);
+  }
+  if (!r.failed()) out = counts;
+}
+
+GridSpec read_grid(JsonReader& r, const json& v) {
+  GridSpec g;
+  if (!r.object(v, "grid", {"prefracture", "runtime"})) return g;
+  read_counts(r, v, "prefracture", g.prefracture);
+  read_counts(r, v, "runtime", g.runtime);
+  return g;
+}
+
+Needs read_needs(JsonReader& r, const json& v) {
+  Needs needs{false, false, false, false, false};
+  if (!r.array(v, "needs")) return Needs{};
+  if (v.empty()) r.fail("needs", fmt::format("must list at least one of {}", fmt::join(need_names, ", ")));
+  std::set<std::string> seen;
+  for (std::size_t i = 0; i < v.size() && !r.failed(); ++i) {
+    const std::string at = index_path("needs", i);
+    std::string name;
+    if (!r.convert(v[i], at, name)) break;
+    if (!seen.insert(name).second) r.fail(at, fmt::format("duplicate \"{}\"", name));
+    bool* flag = name == "fragments" ? &needs.fragments
+                 : name == "bonds"   ? &needs.bonds
+                 : name == "stress"  ? &needs.stress
+                 : name == "colliders" ? &needs.colliders
+                 : name == "physics" ? &needs.physics
+                                     : nullptr;
+    if (flag == nullptr)
+      r.fail(at, fmt::format("unknown need \"{}\" (allowed: {})", name, fmt::join(need_names, ", ")));
+    else
+      *flag = true;
+  }
+  return needs;
+}
+
+}  // namespace
+
+Result<Case> parse_case(std::string_view text, const fs::path& source) {
+  const std::string file = source.empty() ? std::string("<case>") : source.string();
+  Result<json> parsed = parse_json(text, file);
+  if (!parsed) return parsed.error();
+  const json& root = *parsed;
+  JsonReader r(file);
+  if (!r.object(root, "", {"name", "description", "mesh", "material", "gravity", "anchors", "prefracture",
+                           "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs"}))
+    return r.error();
+
+  Case c;
+  c.source = source;
+  c.name = source.empty() ? std::string("case") : source.stem().string();
+  read_line(r, root, "name", true, c.name);
+  read_line(r, root, "description", false, c.description);
+  if (!root.contains("mesh"))
+    r.fail("mesh", "missing required key");
+  else
+    c.mesh = read_mesh_spec(r, root["mesh"], "mesh", source.parent_path());
+  if (root.contains("material")) c.material = read_material(r, root["material"]);
+  r.read(root, "", "gravity", c.gravity);
+  if (root.contains("anchors")) c.anchors = read_anchors(r, root["anchors"]);
+  if (root.contains("prefracture")) c.prefracture = read_prefracture(r, root["prefracture"]);
+  if (r.read(root, "", "frames", c.frames)) r.at_least("frames", c.frames, 1);
+  if (root.contains("impacts")) c.impacts = read_impacts(r, root["impacts"], c.frames);
+  if (root.contains("runtime")) c.runtime = read_runtime(r, root["runtime"]);
+  if (root.contains("stress")) c.stress = read_stress(r, root["stress"]);
+  if (r.read(root, "", "budget_ms", c.budget_ms)) r.positive("budget_ms", c.budget_ms);
+  if (root.contains("grid")) c.grid = read_grid(r, root["grid"]);
+  if (root.contains("needs")) c.needs = read_needs(r, root["needs"]);
+  if (r.failed()) return r.error();
+  return c;
+}
+
+Result<Case> load_case(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return Error{fmt::format("{}: case file not found", path.string())};
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return Error{fmt::format("{}: cannot open the case file", path.string())};
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) return Error{fmt::format("{}: cannot read the case file", path.string())};
+  return parse_case(text, path);
+}
+
+}  // namespace shatter

@@ -1,0 +1,25 @@
+#pragma once
+/// Reading a case file (DESIGN.md section 9, documented key by key in cases/README.md): parse, check
+/// every key, apply the defaults. Never throws; every error is one line naming the file and key path.
+
+#include "algorithms/core/result.h"
+#include "harness/cases/case.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace shatter {
+
+/// The values allowed in `needs`, in contract order.
+inline constexpr std::string_view need_names[] = {"fragments", "bonds", "stress", "colliders", "physics"};
+
+/// Reads and checks the case file at `path`. A relative mesh file is resolved against the file's
+/// folder first, then the current directory.
+Result<Case> load_case(const std::filesystem::path& path);
+
+/// Checks case JSON given as text. `source` names it in errors, gives the default name (its stem)
+/// and the folder relative mesh files are resolved against; it need not exist.
+Result<Case> parse_case(std::string_view text, const std::filesystem::path& source);
+
+}  // namespace shatter

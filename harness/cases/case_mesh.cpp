@@ -1,0 +1,214 @@
+#include "harness/cases/case_mesh.h"
+
+#include "algorithms/core/mesh_io.h"
+#include "algorithms/core/primitives.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numbers>
+
+namespace shatter {
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+/// Reads `segments`-like counts: an integer in [min, max_primitive_segments].
+void read_count(JsonReader& r, const json& obj, std::string_view path, std::string_view key, int min, int& out) {
+  if (r.read(obj, path, key, out)) {
+    const std::string at = key_path(path, key);
+    r.at_least(at, out, min) && r.at_most(at, out, max_primitive_segments);
+  }
+}
+
+/// Reads a required length (m, > 0).
+void read_length(JsonReader& r, const json& obj, std::string_view path, std::string_view key, double& out) {
+  if (r.read_required(obj, path, key, out)) r.positive(key_path(path, key), out);
+}
+
+BoxSpec read_box(JsonReader& r, const json& v, std::string_view path) {
+  BoxSpec s;
+  if (!r.object(v, path, {"size", "center"})) return s;
+  if (r.read_required(v, path, "size", s.size))
+    for (int i = 0; i < 3; ++i) r.positive(index_path(key_path(path, "size"), i), s.size[i]);
+  r.read(v, path, "center", s.center);
+  return s;
+}
+
+SphereSpec read_sphere(JsonReader& r, const json& v, std::string_view path) {
+  SphereSpec s;
+  if (!r.object(v, path, {"radius", "center", "segments", "rings"})) return s;
+  read_length(r, v, path, "radius", s.radius);
+  r.read(v, path, "center", s.center);
+  read_count(r, v, path, "segments", 3, s.segments);
+  read_count(r, v, path, "rings", 2, s.rings);
+  return s;
+}
+
+CylinderSpec read_cylinder(JsonReader& r, const json& v, std::string_view path) {
+  CylinderSpec s;
+  if (!r.object(v, path, {"radius", "height", "center", "segments"})) return s;
+  read_length(r, v, path, "radius", s.radius);
+  read_length(r, v, path, "height", s.height);
+  r.read(v, path, "center", s.center);
+  read_count(r, v, path, "segments", 3, s.segments);
+  return s;
+}
+
+TorusSpec read_torus(JsonReader& r, const json& v, std::string_view path) {
+  TorusSpec s;
+  if (!r.object(v, path, {"major_radius", "minor_radius", "center", "major_segments", "minor_segments"})) return s;
+  read_length(r, v, path, "major_radius", s.major_radius);
+  read_length(r, v, path, "minor_radius", s.minor_radius);
+  if (!r.failed() && s.minor_radius >= s.major_radius)
+    r.fail(key_path(path, "minor_radius"),
+           fmt::format("must be < major_radius ({}), got {}", s.major_radius, s.minor_radius));
+  r.read(v, path, "center", s.center);
+  read_count(r, v, path, "major_segments", 3, s.major_segments);
+  read_count(r, v, path, "minor_segments", 3, s.minor_segments);
+  return s;
+}
+
+TubeSpec read_tube(JsonReader& r, const json& v, std::string_view path) {
+  TubeSpec s;
+  if (!r.object(v, path, {"inner_radius", "outer_radius", "height", "center", "segments"})) return s;
+  read_length(r, v, path, "inner_radius", s.inner_radius);
+  read_length(r, v, path, "outer_radius", s.outer_radius);
+  if (!r.failed() && s.inner_radius >= s.outer_radius)
+    r.fail(key_path(path, "inner_radius"),
+           fmt::format("must be < outer_radius ({}), got {}", s.outer_radius, s.inner_radius));
+  read_length(r, v, path, "height", s.height);
+  r.read(v, path, "center", s.center);
+  read_count(r, v, path, "segments", 3, s.segments);
+  return s;
+}
+
+/// True when `file` ends in .off or .obj, any case.
+bool has_mesh_extension(const fs::path& file) {
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext == ".off" || ext == ".obj";
+}
+
+/// Reads `{"file", "scale", "rotate", "translate"}` and resolves the file.
+MeshFileSpec read_file_spec(JsonReader& r, const json& v, std::string_view path, const fs::path& case_dir) {
+  MeshFileSpec s;
+  const std::string file_at = key_path(path, "file");
+  if (!r.read_required(v, path, "file", s.file)) return s;
+  const fs::path file(s.file);
+  if (s.file.empty() || !has_mesh_extension(file)) {
+    r.fail(file_at, fmt::format("expected a .off or .obj file, got \"{}\"", s.file));
+    return s;
+  }
+  std::error_code ec;
+  if (file.is_absolute()) {
+    s.path = file;
+  } else if (fs::is_regular_file(case_dir / file, ec)) {
+    s.path = case_dir / file;
+  } else {
+    s.path = file;  // relative to the current directory
+  }
+  if (!fs::is_regular_file(s.path, ec)) {
+    std::string where;
+    if (!file.is_absolute())
+      where = case_dir.empty() ? " (looked in the current directory)"
+                               : fmt::format(" (looked in \"{}\" and the current directory)", case_dir.string());
+    r.fail(file_at, fmt::format("mesh file \"{}\" not found{}", s.file, where));
+    return s;
+  }
+  if (r.read(v, path, "scale", s.scale)) r.positive(key_path(path, "scale"), s.scale);
+  r.read(v, path, "rotate", s.rotate_deg);
+  r.read(v, path, "translate", s.translate);
+  return s;
+}
+
+/// cos and sin of `degrees`, exact at multiples of 90.
+std::pair<double, double> cos_sin_deg(double degrees) {
+  const double turns = std::fmod(degrees, 360.0);
+  if (std::fmod(turns, 90.0) == 0.0) {
+    const int quarter = static_cast<int>(std::lround(turns / 90.0) % 4 + 4) % 4;
+    constexpr double c[] = {1.0, 0.0, -1.0, 0.0};
+    constexpr double s[] = {0.0, 1.0, 0.0, -1.0};
+    return {c[quarter], s[quarter]};
+  }
+  const double a = degrees * std::numbers::pi / 180.0;
+  return {std::cos(a), std::sin(a)};
+}
+
+}  // namespace
+
+MeshSpec read_mesh_spec(JsonReader& r, const json& value, std::string_view path, const fs::path& case_dir) {
+  if (!r.object(value, path, {"box", "sphere", "cylinder", "torus", "tube", "file", "scale", "rotate", "translate"}))
+    return {};
+  const char* primitives[] = {"box", "sphere", "cylinder", "torus", "tube", "file"};
+  std::vector<std::string_view> given;
+  for (const char* key : primitives)
+    if (value.contains(key)) given.emplace_back(key);
+  if (given.size() != 1) {
+    r.fail(path, given.empty() ? "expected one of box, sphere, cylinder, torus, tube, file"
+                               : fmt::format("\"{}\" and \"{}\" are exclusive: give one", given[0], given[1]));
+    return {};
+  }
+  const std::string_view kind = given[0];
+  if (kind != "file") {
+    for (const char* key : {"scale", "rotate", "translate"})
+      if (value.contains(key)) {
+        r.fail(key_path(path, key), "only allowed with \"file\" (a primitive has \"center\")");
+        return {};
+      }
+  }
+  const std::string at = key_path(path, kind);
+  const json& v = value.at(kind);
+  if (kind == "box") return read_box(r, v, at);
+  if (kind == "sphere") return read_sphere(r, v, at);
+  if (kind == "cylinder") return read_cylinder(r, v, at);
+  if (kind == "torus") return read_torus(r, v, at);
+  if (kind == "tube") return read_tube(r, v, at);
+  return read_file_spec(r, value, path, case_dir);
+}
+
+Eigen::Matrix3d rotation_xyz_deg(const Vec3& degrees) {
+  const auto [cx, sx] = cos_sin_deg(degrees.x());
+  const auto [cy, sy] = cos_sin_deg(degrees.y());
+  const auto [cz, sz] = cos_sin_deg(degrees.z());
+  Eigen::Matrix3d rx, ry, rz;
+  rx << 1, 0, 0, 0, cx, -sx, 0, sx, cx;
+  ry << cy, 0, sy, 0, 1, 0, -sy, 0, cy;
+  rz << cz, -sz, 0, sz, cz, 0, 0, 0, 1;
+  return rz * ry * rx;  // x first
+}
+
+Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what) {
+  if (const auto* s = std::get_if<BoxSpec>(&spec)) return make_box(s->size, s->center);
+  if (const auto* s = std::get_if<SphereSpec>(&spec)) return make_sphere(s->radius, s->segments, s->rings, s->center);
+  if (const auto* s = std::get_if<CylinderSpec>(&spec))
+    return make_cylinder(s->radius, s->height, s->segments, s->center);
+  if (const auto* s = std::get_if<TorusSpec>(&spec))
+    return make_torus(s->major_radius, s->minor_radius, s->major_segments, s->minor_segments, s->center);
+  if (const auto* s = std::get_if<TubeSpec>(&spec))
+    return make_tube(s->inner_radius, s->outer_radius, s->height, s->segments, s->center);
+  const auto& file = std::get<MeshFileSpec>(spec);
+  Result<Mesh> mesh = read_mesh(file.path);
+  if (!mesh) return Error{fmt::format("{}: {}", what, mesh.error().message)};
+  const Eigen::Matrix3d rotation = rotation_xyz_deg(file.rotate_deg);
+  const bool identity =
+      file.scale == 1.0 && rotation == Eigen::Matrix3d::Identity() && (file.translate.array() == 0.0).all();
+  if (!identity)
+    for (Vec3& p : mesh->vertices) p = rotation * (file.scale * p) + file.translate;
+  return mesh;
+}
+
+Result<Solid> build_case_solid(const Case& c) {
+  const std::string what = fmt::format("{}: mesh", c.source.empty() ? c.name : c.source.string());
+  Result<Mesh> mesh = build_case_mesh(c.mesh, what);
+  if (!mesh) return mesh.error();
+  const std::string name = std::holds_alternative<MeshFileSpec>(c.mesh)
+                               ? fmt::format("{} ({})", what, std::get<MeshFileSpec>(c.mesh).path.string())
+                               : what;
+  return make_solid(std::move(mesh).value(), name);
+}
+
+}  // namespace shatter
