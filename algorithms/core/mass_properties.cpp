@@ -1,0 +1,90 @@
+#include "algorithms/core/mass_properties.h"
+
+#include <Eigen/Geometry>
+
+#include <cassert>
+
+namespace shatter {
+namespace {
+
+/// A point near the mesh (the centre of its bounding box): the integrals are taken relative to it so
+/// that a mesh far from the origin keeps its digits.
+Vec3 reference_point(const Mesh& mesh) {
+  if (mesh.vertices.empty()) return Vec3::Zero();
+  const Aabb box = bounding_box(mesh);
+  const Vec3 centre = 0.5 * (box.min + box.max);
+  return centre.allFinite() ? centre : Vec3::Zero();
+}
+
+}  // namespace
+
+// Each outward triangle (a, b, c), taken relative to the reference point, spans a signed tetrahedron
+// with it, of determinant D = a . (b x c) and volume D / 6. Mapping the unit tetrahedron onto it
+// (x = a u + b v + c w), the moments over the unit tetrahedron are int 1 = 1/6, int u = 1/24,
+// int u^2 = 1/60 and int u v = 1/120, so
+//   first moment   int x dV     = D / 24 (a + b + c),
+//   second moment  int x x^T dV = D / 120 (a a^T + b b^T + c c^T + s s^T),  s = a + b + c
+// (the diagonal terms give D (2/120) a a^T = D/60 a a^T, the mixed ones D/120 (a b^T + b a^T)).
+// By the divergence theorem the sums over a closed surface are the integrals over the solid.
+MassProperties mass_properties(const Mesh& mesh) {
+  assert(mesh.tags.size() == mesh.triangles.size());
+  const Vec3 origin = reference_point(mesh);
+  double six_volume = 0.0;
+  Vec3 moment24 = Vec3::Zero();                     // 24 * first moment
+  Eigen::Matrix3d second120 = Eigen::Matrix3d::Zero();  // 120 * second moment
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]] - origin;
+    const Vec3 b = mesh.vertices[t[1]] - origin;
+    const Vec3 c = mesh.vertices[t[2]] - origin;
+    const double d = a.dot(b.cross(c));
+    const Vec3 s = a + b + c;
+    six_volume += d;
+    moment24 += d * s;
+    second120 += d * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  MassProperties result;
+  result.volume = six_volume / 6.0;
+  if (six_volume == 0.0) return result;
+  const Vec3 centre = moment24 / (4.0 * six_volume);  // (moment24 / 24) / (six_volume / 6)
+  result.centroid = origin + centre;
+  // Parallel-axis shift of the second moment to the centroid, then I = tr(C) Id - C.
+  const Eigen::Matrix3d covariance = second120 / 120.0 - result.volume * centre * centre.transpose();
+  result.inertia = covariance.trace() * Eigen::Matrix3d::Identity() - covariance;
+  result.inertia = 0.5 * (result.inertia + result.inertia.transpose()).eval();
+  return result;
+}
+
+double signed_volume(const Mesh& mesh) {
+  const Vec3 origin = reference_point(mesh);
+  double six_volume = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]] - origin;
+    const Vec3 b = mesh.vertices[t[1]] - origin;
+    const Vec3 c = mesh.vertices[t[2]] - origin;
+    six_volume += a.dot(b.cross(c));
+  }
+  return six_volume / 6.0;
+}
+
+double tagged_area(const Mesh& mesh, FaceTag tag) {
+  assert(mesh.tags.size() == mesh.triangles.size());
+  double twice_area = 0.0;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (mesh.tags[f] != tag) continue;
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.vertices[t[0]];
+    twice_area += (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  }
+  return 0.5 * twice_area;
+}
+
+double surface_area(const Mesh& mesh) {
+  double twice_area = 0.0;
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[t[0]];
+    twice_area += (mesh.vertices[t[1]] - a).cross(mesh.vertices[t[2]] - a).norm();
+  }
+  return 0.5 * twice_area;
+}
+
+}  // namespace shatter
