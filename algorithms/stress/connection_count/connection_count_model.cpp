@@ -1,0 +1,65 @@
+#include "algorithms/stress/connection_count/connection_count_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace shatter {
+
+Result<StressResult> ConnectionCountModel::evaluate(const SupportGraph& graph, const Loads& loads,
+                                                    const Material& material) const {
+  StressResult fresh;
+  fresh.bonds.resize(graph.bonds.size());
+  return reevaluate(graph, loads, material, fresh, {});
+}
+
+Result<StressResult> ConnectionCountModel::reevaluate(const SupportGraph& graph, const Loads& loads,
+                                                      const Material& material, const StressResult& previous,
+                                                      std::span<const int> /*touched*/) const {
+  if (Status s = check_material(material); !s) return s.error();
+  if (Status s = check_loads(loads, graph); !s) return s.error();
+  if (!(settings_.min_support_fraction >= 0.0 && settings_.min_support_fraction <= 1.0) ||
+      settings_.min_connections < 0)
+    return Error{"connection-count: min_support_fraction must be in [0, 1] and min_connections >= 0"};
+  assert(previous.bonds.size() == graph.bonds.size());
+
+  // Original counts from every bonded pair; intact counts from the pairs with an unbroken bond.
+  ConnectionGraph original = ConnectionGraph::from_support_graph(graph, settings_);
+  SupportGraph intact_graph;
+  intact_graph.nodes = graph.nodes;
+  for (std::size_t i = 0; i < graph.bonds.size(); ++i)
+    if (!previous.bonds[i].broken) intact_graph.bonds.push_back(graph.bonds[i]);
+  const ConnectionGraph intact = ConnectionGraph::from_support_graph(intact_graph, settings_);
+
+  StressResult out;
+  out.bonds.resize(graph.bonds.size());
+  for (std::size_t i = 0; i < graph.bonds.size(); ++i) {
+    BondStress& s = out.bonds[i];
+    s.broken = previous.bonds[i].broken;
+    if (s.broken) continue;
+    for (const int end : {graph.bonds[i].a, graph.bonds[i].b}) {
+      const int count = intact.connection_count(end);  // >= 1: this bond is intact
+      s.utilization = std::max(s.utilization, original.required(end) / static_cast<double>(count));
+    }
+  }
+  // Falling clusters: the seed's FindCluster from every piece not yet placed, kept when rootless.
+  std::vector<std::uint8_t> placed(graph.nodes.size(), 0);
+  for (int v = 0; v < graph.node_count(); ++v) {
+    if (placed[static_cast<std::size_t>(v)]) continue;
+    std::vector<int> cluster = intact.find_cluster(v);
+    bool rooted = false;
+    for (const int w : cluster) {
+      placed[static_cast<std::size_t>(w)] = 1;
+      rooted = rooted || graph.nodes[static_cast<std::size_t>(w)].anchored;
+    }
+    if (!rooted) out.falling_clusters.push_back(std::move(cluster));
+  }
+  return out;
+}
+
+void register_connection_count(StressModelRegistry& registry) {
+  registry.add("connection-count", "the seed's heuristic: count of remaining connections, DFS to a root",
+               [] { return std::make_unique<ConnectionCountModel>(); });
+}
+
+}  // namespace shatter

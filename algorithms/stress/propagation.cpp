@@ -1,0 +1,75 @@
+#include "algorithms/stress/propagation.h"
+
+#include "algorithms/bonds/graph_components.h"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+
+namespace shatter {
+
+namespace {
+
+void accumulate(SolverReport& total, const SolverReport& r) {
+  total.solves += r.solves;
+  total.iterations += r.iterations;
+  total.converged = total.converged && r.converged;
+  total.residual = std::max(total.residual, r.residual);
+  total.unknowns = std::max(total.unknowns, r.unknowns);
+}
+
+}  // namespace
+
+Result<PropagationResult> propagate(const StressModel& model, const SupportGraph& graph, const Loads& loads,
+                                    const Material& material, std::span<const int> initially_broken,
+                                    const PropagationSettings& settings) {
+  if (settings.max_rounds < 0) return Error{"propagation: max_rounds must be >= 0"};
+  for (const int b : initially_broken)
+    if (b < 0 || b >= graph.bond_count())
+      return Error{"propagation: broken bond " + std::to_string(b) + " out of range (" +
+                   std::to_string(graph.bond_count()) + " bonds)"};
+
+  PropagationResult out;
+  Result<StressResult> current = Error{""};
+  if (initially_broken.empty()) {
+    current = model.evaluate(graph, loads, material);
+  } else {
+    StressResult start;
+    start.bonds.resize(graph.bonds.size());
+    for (const int b : initially_broken) start.bonds[static_cast<std::size_t>(b)].broken = true;
+    std::vector<int> all(graph.nodes.size());
+    std::iota(all.begin(), all.end(), 0);
+    current = model.reevaluate(graph, loads, material, start, all);
+  }
+  if (!current) return current.error();
+  accumulate(out.report, current->report);
+
+  std::vector<int> failing, touched;
+  while (true) {
+    failing.clear();
+    for (int i = 0; i < graph.bond_count(); ++i) {
+      const BondStress& s = current->bonds[static_cast<std::size_t>(i)];
+      if (!s.broken && s.utilization > 1.0) failing.push_back(i);
+    }
+    if (failing.empty() || out.rounds >= settings.max_rounds) break;
+    touched.clear();
+    StressResult next = std::move(current.value());
+    for (const int b : failing) {
+      next.bonds[static_cast<std::size_t>(b)].broken = true;
+      touched.push_back(graph.bonds[static_cast<std::size_t>(b)].a);
+      touched.push_back(graph.bonds[static_cast<std::size_t>(b)].b);
+    }
+    out.break_order.push_back(failing);
+    ++out.rounds;
+    current = model.reevaluate(graph, loads, material, next, touched);
+    if (!current) return current.error();
+    accumulate(out.report, current->report);
+  }
+  out.result = std::move(current.value());
+  std::vector<std::uint8_t> broken(graph.bonds.size());
+  for (std::size_t i = 0; i < broken.size(); ++i) broken[i] = out.result.bonds[i].broken ? 1 : 0;
+  out.result.falling_clusters = falling_clusters(graph_components(graph, broken));
+  return out;
+}
+
+}  // namespace shatter

@@ -1,0 +1,39 @@
+#pragma once
+/// Failure propagation: break what fails, re-solve what the breaks touched, until nothing fails; then
+/// the clusters with no path to an anchor fall.
+///
+/// Every bond with utilization > 1 breaks in the same round (a round is one static state: the loads are
+/// applied at once, so no bond is privileged by the order of a loop). After a round only the
+/// components holding an end of a newly broken bond are re-solved; the model warm-starts them from the
+/// previous displacements (iterative solver) or refactorises them (direct solver: a break changes the
+/// matrix, and Eigen has no factorisation update). Components without an anchor are falling clusters
+/// and are never solved.
+
+#include "algorithms/stress/stress_model.h"
+
+#include <span>
+#include <vector>
+
+namespace shatter {
+
+/// Limits of a cascade.
+struct PropagationSettings {
+  int max_rounds = 10000;   ///< rounds of breaking before giving up (each round breaks >= 1 bond)
+};
+
+/// The final state of a cascade.
+struct PropagationResult {
+  StressResult result;                       ///< stresses after the last round, `broken` flags set
+  std::vector<std::vector<int>> break_order; ///< bond indices broken in each round, first round first
+  int rounds = 0;                            ///< rounds that broke something
+  SolverReport report;                       ///< summed over every evaluation of the cascade
+};
+
+/// Evaluates `graph` with `model`, breaks failing bonds round by round until stable, and reports the
+/// falling clusters of the final state (union-find over the intact bonds). `initially_broken` bonds
+/// (e.g. destroyed by an impact) are removed before the first evaluation.
+Result<PropagationResult> propagate(const StressModel& model, const SupportGraph& graph, const Loads& loads,
+                                    const Material& material, std::span<const int> initially_broken = {},
+                                    const PropagationSettings& settings = {});
+
+}  // namespace shatter

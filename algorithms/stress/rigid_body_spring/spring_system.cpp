@@ -1,0 +1,220 @@
+#include "algorithms/stress/rigid_body_spring/spring_system.h"
+
+#include <Eigen/Geometry>
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace shatter {
+
+namespace {
+
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+using Vector6 = Eigen::Matrix<double, 6, 1>;
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Vector = Eigen::VectorXd;
+
+Eigen::Matrix3d skew(const Vec3& r) {
+  Eigen::Matrix3d s;
+  s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  return s;
+}
+
+/// Spring constants of a bond in its frame: (k_n, k_s, k_s) and (k_t, k_b1, k_b2).
+struct BondStiffness {
+  Eigen::Matrix3d frame;     // columns n, axis_1, axis_2
+  Vec3 translational;        // N/m
+  Vec3 rotational;           // N m/rad
+};
+
+BondStiffness bond_stiffness(const Bond& e, const Material& m) {
+  // Second moments are floored at 1e-8 A^2 (a square has A^2 / 12): a sliver contact still resists
+  // every rotation a little, so the matrix stays positive definite.
+  const double floor = 1e-8 * e.area * e.area;
+  const double e_over_l = m.young_modulus / e.length;
+  const double g_over_l = m.shear_modulus() / e.length;
+  BondStiffness k;
+  k.frame.col(0) = e.normal;
+  k.frame.col(1) = e.axis_1;
+  k.frame.col(2) = e.axis_2;
+  k.translational = Vec3(e_over_l * e.area, g_over_l * e.area, g_over_l * e.area);
+  k.rotational = Vec3(g_over_l * std::max(e.polar_moment, 2.0 * floor), e_over_l * std::max(e.moment_1, floor),
+                      e_over_l * std::max(e.moment_2, floor));
+  return k;
+}
+
+/// Maps a node's 6 unknowns to the bond's relative motion (delta, phi): +1 for b, -1 for a.
+Matrix6 motion_map(const Vec3& lever, double sign) {
+  Matrix6 b = Matrix6::Zero();
+  b.topLeftCorner<3, 3>() = sign * Eigen::Matrix3d::Identity();
+  b.topRightCorner<3, 3>() = -sign * skew(lever);  // theta x r = -[r]x theta
+  b.bottomRightCorner<3, 3>() = sign * Eigen::Matrix3d::Identity();
+  return b;
+}
+
+}  // namespace
+
+std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, const Material& material) {
+  std::vector<double> f(6 * graph.nodes.size(), 0.0);
+  for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
+    const Vec3 weight = material.density * graph.nodes[i].volume * loads.gravity;
+    for (int k = 0; k < 3; ++k) f[6 * i + static_cast<std::size_t>(k)] = weight[k];
+  }
+  for (const PointLoad& p : loads.point_loads) {
+    const std::size_t i = static_cast<std::size_t>(p.node);
+    const Vec3 moment = (p.point - graph.nodes[i].centroid).cross(p.force);
+    for (int k = 0; k < 3; ++k) {
+      f[6 * i + static_cast<std::size_t>(k)] += p.force[k];
+      f[6 * i + 3 + static_cast<std::size_t>(k)] += moment[k];
+    }
+  }
+  return f;
+}
+
+SolverReport solve_component(const SupportGraph& graph, std::span<const int> nodes, std::span<const int> bonds,
+                             std::span<const double> loads, const Material& material,
+                             const SpringSolverSettings& settings, std::vector<double>& displacements,
+                             std::vector<BondForces>& forces) {
+  // Local numbering of the free (not anchored) nodes; anchored ones keep -1.
+  std::vector<int> local(graph.nodes.size(), -1);
+  std::vector<int> free_nodes;
+  for (const int v : nodes)
+    if (!graph.nodes[static_cast<std::size_t>(v)].anchored) {
+      local[static_cast<std::size_t>(v)] = static_cast<int>(free_nodes.size());
+      free_nodes.push_back(v);
+    }
+  const int nf = static_cast<int>(free_nodes.size());
+  const int n = 6 * nf;
+  SolverReport report;
+  report.unknowns = n;
+
+  // Column pattern: node i's columns hold the 6 rows of i and of every free neighbour, sorted.
+  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(nf));
+  for (int i = 0; i < nf; ++i) neighbours[static_cast<std::size_t>(i)].push_back(i);
+  for (const int bi : bonds) {
+    const Bond& e = graph.bonds[static_cast<std::size_t>(bi)];
+    const int la = local[static_cast<std::size_t>(e.a)], lb = local[static_cast<std::size_t>(e.b)];
+    if (la >= 0 && lb >= 0) {
+      neighbours[static_cast<std::size_t>(la)].push_back(lb);
+      neighbours[static_cast<std::size_t>(lb)].push_back(la);
+    }
+  }
+  std::vector<int> outer(static_cast<std::size_t>(n) + 1, 0);
+  for (int i = 0; i < nf; ++i) {
+    auto& list = neighbours[static_cast<std::size_t>(i)];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int k = 0; k < 6; ++k) outer[static_cast<std::size_t>(6 * i + k + 1)] = 6 * static_cast<int>(list.size());
+  }
+  for (int c = 0; c < n; ++c) outer[static_cast<std::size_t>(c + 1)] += outer[static_cast<std::size_t>(c)];
+  SparseMatrix stiffness(n, n);
+  stiffness.resizeNonZeros(outer.back());
+  std::copy(outer.begin(), outer.end(), stiffness.outerIndexPtr());
+  int* inner = stiffness.innerIndexPtr();
+  double* value = stiffness.valuePtr();
+  std::fill(value, value + outer.back(), 0.0);
+  for (int i = 0; i < nf; ++i)
+    for (int k = 0; k < 6; ++k) {
+      int at = outer[static_cast<std::size_t>(6 * i + k)];
+      for (const int j : neighbours[static_cast<std::size_t>(i)])
+        for (int r = 0; r < 6; ++r) inner[at++] = 6 * j + r;
+    }
+  // Adds a 6 x 6 block at (row node j, column node i).
+  auto add_block = [&](int j, int i, const Matrix6& block) {
+    const auto& list = neighbours[static_cast<std::size_t>(i)];
+    const int slot = static_cast<int>(std::lower_bound(list.begin(), list.end(), j) - list.begin());
+    for (int k = 0; k < 6; ++k) {
+      double* column = value + outer[static_cast<std::size_t>(6 * i + k)] + 6 * slot;
+      for (int r = 0; r < 6; ++r) column[r] += block(r, k);
+    }
+  };
+
+  std::vector<Matrix6> maps(bonds.size() * 2);
+  std::vector<Matrix6> springs(bonds.size());
+  for (std::size_t q = 0; q < bonds.size(); ++q) {
+    const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
+    const BondStiffness k = bond_stiffness(e, material);
+    Matrix6 d = Matrix6::Zero();
+    d.topLeftCorner<3, 3>() = k.frame * k.translational.asDiagonal() * k.frame.transpose();
+    d.bottomRightCorner<3, 3>() = k.frame * k.rotational.asDiagonal() * k.frame.transpose();
+    springs[q] = d;
+    maps[2 * q] = motion_map(e.centroid - graph.nodes[static_cast<std::size_t>(e.a)].centroid, -1.0);
+    maps[2 * q + 1] = motion_map(e.centroid - graph.nodes[static_cast<std::size_t>(e.b)].centroid, +1.0);
+    const int ends[2] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
+    for (int x = 0; x < 2; ++x)
+      for (int y = 0; y < 2; ++y)
+        if (ends[x] >= 0 && ends[y] >= 0)
+          add_block(ends[y], ends[x], maps[2 * q + static_cast<std::size_t>(y)].transpose() * d *
+                                          maps[2 * q + static_cast<std::size_t>(x)]);
+  }
+
+  Vector f(n), u(n);
+  for (int i = 0; i < nf; ++i)
+    for (int k = 0; k < 6; ++k) {
+      const std::size_t g = 6 * static_cast<std::size_t>(free_nodes[static_cast<std::size_t>(i)]) + static_cast<std::size_t>(k);
+      f[6 * i + k] = loads[g];
+      u[6 * i + k] = displacements[g];
+    }
+  const double f_norm = f.norm();
+  if (n > 0 && f_norm > 0.0) {
+    report.solves = 1;
+    if (n <= settings.direct_max_unknowns) {
+      // Small systems: a sparse LDL^T factorisation (AMD ordering) is exact and fastest here.
+      Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt(stiffness);
+      report.converged = ldlt.info() == Eigen::Success;
+      if (report.converged) {
+        u = ldlt.solve(f);
+        for (int step = 0; step < settings.refinement_steps; ++step) u += ldlt.solve(f - stiffness * u);
+      }
+    } else {
+      // Large systems: Jacobi-preconditioned CG, warm-started from the previous displacements.
+      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg(stiffness);
+      cg.setTolerance(settings.cg_tolerance);
+      cg.setMaxIterations(settings.cg_max_iterations);
+      if (!u.allFinite()) u.setZero();
+      u = cg.solveWithGuess(f, u);
+      report.iterations = static_cast<int>(cg.iterations());
+      report.converged = cg.info() == Eigen::Success;
+    }
+    if (!u.allFinite()) {
+      report.converged = false;
+      u.setZero();
+    }
+    report.residual = (f - stiffness * u).norm() / f_norm;
+  } else {
+    u.setZero();
+  }
+  for (int i = 0; i < nf; ++i)
+    for (int k = 0; k < 6; ++k)
+      displacements[6 * static_cast<std::size_t>(free_nodes[static_cast<std::size_t>(i)]) + static_cast<std::size_t>(k)] = u[6 * i + k];
+  for (const int v : nodes)
+    if (graph.nodes[static_cast<std::size_t>(v)].anchored)
+      std::fill_n(displacements.begin() + 6 * static_cast<std::ptrdiff_t>(v), 6, 0.0);
+
+  // Bond forces: the spring forces from the relative motion, expressed in the bond frame.
+  for (std::size_t q = 0; q < bonds.size(); ++q) {
+    const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
+    Vector6 motion = Vector6::Zero();
+    for (int end = 0; end < 2; ++end) {
+      const int v = end == 0 ? e.a : e.b;
+      const Vector6 ue = Eigen::Map<const Vector6>(displacements.data() + 6 * static_cast<std::size_t>(v));
+      motion += maps[2 * q + static_cast<std::size_t>(end)] * ue;
+    }
+    const Vector6 spring = springs[q] * motion;  // force and moment b receives is minus this
+    BondForces& out = forces[static_cast<std::size_t>(bonds[q])];
+    const Vec3 force = spring.head<3>(), moment = spring.tail<3>();
+    out.normal = force.dot(e.normal);
+    out.shear_1 = force.dot(e.axis_1);
+    out.shear_2 = force.dot(e.axis_2);
+    out.torsion = moment.dot(e.normal);
+    out.moment_1 = moment.dot(e.axis_1);
+    out.moment_2 = moment.dot(e.axis_2);
+  }
+  return report;
+}
+
+}  // namespace shatter

@@ -1,0 +1,57 @@
+#pragma once
+/// The static solve of the rigid-body-spring model for one anchored component of a support graph.
+///
+/// Design note: every fragment is a rigid body with 6 unknowns, its translation u (m) and small
+/// rotation theta (rad) about its centroid. Every intact bond is a zero-length spring set at the bond
+/// centroid p, in the bond frame (n, axis_1, axis_2): normal stiffness E A / L, shear G A / L, bending
+/// E I_1 / L and E I_2 / L about the principal axes, torsion G J / L, with L the bond's characteristic
+/// length (centroid a -> plane -> centroid b). The relative motion across the bond is
+///   delta = (u_b + theta_b x (p - x_b)) - (u_a + theta_a x (p - x_a)),  phi = theta_b - theta_a,
+/// and the spring forces acting on b are -K_t delta and -K_r phi. Anchored bodies have no unknowns.
+/// Both spring forces act at p, so each body's equilibrium K u = f is exact statics: where the
+/// structure is statically determinate the bond forces are those of equilibrium, whatever E, G and L.
+/// The matrix is assembled straight into compressed columns (the pattern is the graph's), with 6 x 6
+/// blocks per node pair.
+
+#include "algorithms/bonds/support_graph.h"
+#include "algorithms/stress/material.h"
+#include "algorithms/stress/stress_model.h"
+
+#include <span>
+#include <vector>
+
+namespace shatter {
+
+/// Solver options. Direct below the threshold: exact to round-off (the beam tests need 1e-9) and, on
+/// block walls measured with benchmarks/stress_benchmarks.cpp, no slower than Jacobi-CG up to ~3,000
+/// unknowns (7.4 ms LDLT against 6.2 ms CG at 2,898); above it the LDLT fill grows faster than CG's
+/// iteration count, and CG can be warm-started after a break.
+struct SpringSolverSettings {
+  int direct_max_unknowns = 3000;     ///< sparse LDLT up to this many unknowns, conjugate gradients above
+  int refinement_steps = 2;           ///< iterative-refinement steps after a direct solve
+  double cg_tolerance = 1e-10;        ///< relative residual |K u - f| / |f| at which CG stops
+  int cg_max_iterations = 20000;      ///< CG gives up (converged = false) after this many iterations
+};
+
+/// Internal forces of one bond, in its frame; the forces b receives from a are minus these.
+struct BondForces {
+  double normal = 0.0;                ///< N, + tension
+  double shear_1 = 0.0;               ///< N, along axis_1
+  double shear_2 = 0.0;               ///< N, along axis_2
+  double torsion = 0.0;               ///< N m, about the normal
+  double moment_1 = 0.0;              ///< N m, bending about axis_1
+  double moment_2 = 0.0;              ///< N m, bending about axis_2
+};
+
+/// External force and moment (about the centroid) on every node: 6 #nodes, N and N m.
+std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, const Material& material);
+
+/// Solves the component made of `nodes` (with at least one anchored) and its intact `bonds`.
+/// `displacements` (6 #nodes, global) is read as the warm start of the component's nodes and
+/// overwritten with the solution; `forces` (#bonds, global) receives the forces of `bonds`.
+SolverReport solve_component(const SupportGraph& graph, std::span<const int> nodes, std::span<const int> bonds,
+                             std::span<const double> loads, const Material& material,
+                             const SpringSolverSettings& settings, std::vector<double>& displacements,
+                             std::vector<BondForces>& forces);
+
+}  // namespace shatter

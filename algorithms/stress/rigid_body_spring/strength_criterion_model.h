@@ -1,0 +1,40 @@
+#pragma once
+/// "tresca" and "von-mises": the rigid-body-spring static solve (spring_system.h) with a strength
+/// criterion on every bond (strength_criterion.h). Components with no anchor are falling clusters and
+/// are never solved (their stiffness matrix is singular); their bonds report zero stress.
+
+#include "algorithms/stress/rigid_body_spring/spring_system.h"
+#include "algorithms/stress/strength_criterion.h"
+#include "algorithms/stress/stress_model.h"
+#include "algorithms/stress/stress_model_registry.h"
+
+namespace shatter {
+
+/// A rigid-body-spring model judged by one criterion.
+class StrengthCriterionModel final : public StressModel {
+ public:
+  /// The model for `criterion`, with solver `settings`.
+  explicit StrengthCriterionModel(Criterion criterion, SpringSolverSettings settings = {})
+      : criterion_(criterion), settings_(settings) {}
+
+  [[nodiscard]] std::string_view name() const override {
+    return criterion_ == Criterion::tresca ? "tresca" : "von-mises";
+  }
+  [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
+                                              const Material& material) const override;
+  [[nodiscard]] Result<StressResult> reevaluate(const SupportGraph& graph, const Loads& loads,
+                                                const Material& material, const StressResult& previous,
+                                                std::span<const int> touched) const override;
+
+ private:
+  Criterion criterion_;
+  SpringSolverSettings settings_;
+};
+
+/// Registers "tresca".
+void register_tresca(StressModelRegistry& registry);
+
+/// Registers "von-mises".
+void register_von_mises(StressModelRegistry& registry);
+
+}  // namespace shatter

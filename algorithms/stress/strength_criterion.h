@@ -1,0 +1,35 @@
+#pragma once
+/// From a bond's internal forces to its peak stresses and its utilization under Tresca or von Mises.
+///
+/// Peak normal stress (beam theory over the contact section, principal axes 1 and 2):
+///   bending part  s_b = |M_1| c_1 / I_1 + |M_2| c_2 / I_2   (c_i: largest distance from axis i)
+///   tension fibre s_t = N / A + s_b,   compression fibre s_c = N / A - s_b   (N > 0 in tension).
+/// Both extreme fibres are checked: the tension one against the tensile strength, the compression one
+/// against the compressive strength. Using the largest distance on both sides of each axis is exact
+/// for sections symmetric about their principal axes (rectangles, discs) and conservative otherwise.
+/// Shear: tau = V / A + |T| r_max / J, the average shear (not the 1.5 V / A peak of a rectangle: bond
+/// sections are arbitrary polygons, and the average is what the section carries everywhere) plus the
+/// torsion of a circular section of radius r_max (exact for discs, conservative for compact sections).
+/// Utilization = max(criterion(s_t, tau) / f_t if s_t > 0, criterion(s_c, tau) / f_c if s_c < 0,
+/// tau / f_s), with criterion Tresca sqrt(s^2 + 4 tau^2) or von Mises sqrt(s^2 + 3 tau^2).
+
+#include "algorithms/bonds/support_graph.h"
+#include "algorithms/stress/material.h"
+#include "algorithms/stress/rigid_body_spring/spring_system.h"
+#include "algorithms/stress/stress_model.h"
+
+namespace shatter {
+
+/// Which equivalent stress combines sigma and tau.
+enum class Criterion {
+  tresca,     ///< sqrt(sigma^2 + 4 tau^2)
+  von_mises,  ///< sqrt(sigma^2 + 3 tau^2)
+};
+
+/// Equivalent stress of a normal stress `sigma` and a shear stress `tau` (Pa).
+double equivalent_stress(Criterion criterion, double sigma, double tau);
+
+/// Forces, stresses and utilization of `bond` carrying `forces` (see the header note).
+BondStress bond_stress(const Bond& bond, const BondForces& forces, const Material& material, Criterion criterion);
+
+}  // namespace shatter

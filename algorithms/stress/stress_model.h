@@ -1,0 +1,86 @@
+#pragma once
+/// The stress model interface: loads in, per-bond forces, stresses and utilization out, plus the
+/// clusters that have lost every path to an anchor.
+///
+/// Design note: a model is stateless; the state of a cascade (which bonds are broken, the last
+/// displacements for a warm start) lives in the StressResult, which `reevaluate` takes back. That keeps
+/// one model object usable from several pipelines and makes "only the affected component is re-solved"
+/// a property the caller can check: components with no touched node are copied from the previous
+/// result bit for bit.
+
+#include "algorithms/bonds/support_graph.h"
+#include "algorithms/core/result.h"
+#include "algorithms/stress/material.h"
+
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace shatter {
+
+/// A force applied to one fragment at a point.
+struct PointLoad {
+  int node = 0;                   ///< fragment index
+  Vec3 point = Vec3::Zero();      ///< point of application, m
+  Vec3 force = Vec3::Zero();      ///< N
+};
+
+/// What the structure carries.
+struct Loads {
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);   ///< m/s^2, acts on every fragment's mass at its centroid
+  std::vector<PointLoad> point_loads;     ///< extra forces, N
+};
+
+/// Forces, stresses and verdict of one bond. Magnitudes are >= 0 unless said otherwise.
+struct BondStress {
+  double normal_force = 0.0;      ///< N, signed: + tension (b pulled away from a), - compression
+  double shear_force = 0.0;       ///< N, in-plane force magnitude
+  double bending_moment = 0.0;    ///< N m, magnitude of the in-plane moment
+  double torsion = 0.0;           ///< N m, magnitude of the moment about the normal
+  double sigma = 0.0;             ///< Pa, peak normal stress magnitude (the governing extreme fibre)
+  bool tensile = false;           ///< the governing peak normal stress is tension
+  double tau = 0.0;               ///< Pa, peak shear stress
+  double utilization = 0.0;       ///< dimensionless, the bond fails when > 1
+  bool broken = false;            ///< removed (by propagation, or given broken)
+};
+
+/// How the linear solves went (summed over every component solved).
+struct SolverReport {
+  int solves = 0;                 ///< number of linear systems solved
+  int iterations = 0;             ///< iterative-solver iterations, summed (0 for direct solves)
+  bool converged = true;          ///< every solve reached its tolerance
+  double residual = 0.0;          ///< largest relative residual |K u - f| / |f|
+  int unknowns = 0;               ///< largest system size solved, #DOF
+};
+
+/// The outcome of one evaluation.
+struct StressResult {
+  std::vector<BondStress> bonds;                  ///< #bonds, same order as SupportGraph::bonds
+  std::vector<std::vector<int>> falling_clusters; ///< fragment indices of each component with no anchor
+  std::vector<double> displacements;              ///< 6 #nodes: translation (m) and rotation (rad) per node
+  SolverReport report;                            ///< solver statistics
+};
+
+/// A stress model. Implementations are stateless and thread-compatible.
+class StressModel {
+ public:
+  virtual ~StressModel() = default;
+  /// Registered name, e.g. "von-mises".
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  /// Evaluates the intact graph. Errors for a bad material or bad loads.
+  [[nodiscard]] virtual Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
+                                                      const Material& material) const = 0;
+  /// Re-evaluates after bonds were flagged broken in `previous`: components holding any node of
+  /// `touched` are solved again (warm-started from `previous.displacements`), the others are copied.
+  [[nodiscard]] virtual Result<StressResult> reevaluate(const SupportGraph& graph, const Loads& loads,
+                                                        const Material& material, const StressResult& previous,
+                                                        std::span<const int> touched) const = 0;
+};
+
+/// Error unless every material constant is finite and in range (names the field).
+Status check_material(const Material& material);
+
+/// Error unless gravity and every point load are finite and refer to existing nodes.
+Status check_loads(const Loads& loads, const SupportGraph& graph);
+
+}  // namespace shatter

@@ -1,0 +1,95 @@
+// Stress models on block walls of about 100, 1,000 and 10,000 bonds: one evaluation, and the full
+// cascade after a block at the foot of the wall is knocked out. The main is in fracture_benchmarks.cpp.
+#include "algorithms/register_all.h"
+#include "algorithms/stress/propagation.h"
+#include "tests/stress/structures.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace {
+
+using namespace shatter;
+
+/// Wall sides (blocks along x and up z) giving about 100, 1,000 and 10,000 bonds.
+std::pair<int, int> wall_sides(int bonds) {
+  if (bonds <= 100) return {8, 7};      // 97 bonds
+  if (bonds <= 1000) return {23, 22};   // 967 bonds
+  return {71, 71};                      // 9,940 bonds
+}
+
+/// Walls are built once per size (the plane slicing is not what is measured).
+const SupportGraph& wall(int bonds) {
+  static std::map<int, std::unique_ptr<SupportGraph>> cache;
+  auto& slot = cache[bonds];
+  if (!slot) {
+    const auto [nx, nz] = wall_sides(bonds);
+    slot = std::make_unique<SupportGraph>(test::block_wall(nx, nz));
+  }
+  return *slot;
+}
+
+/// The bonds of the block in the second row nearest the middle of the wall: the impact's hole.
+std::vector<int> hole(const SupportGraph& g) {
+  int target = 0;
+  double best = 1e300;
+  double x_mid = 0.0;
+  for (const SupportNode& n : g.nodes) x_mid = std::max(x_mid, n.centroid.x());
+  for (int v = 0; v < g.node_count(); ++v) {
+    const Vec3& c = g.nodes[static_cast<std::size_t>(v)].centroid;
+    const double d = std::abs(c.x() - x_mid / 2) + std::abs(c.z() - 0.75);
+    if (d < best) best = d, target = v;
+  }
+  return g.node_bonds[static_cast<std::size_t>(target)];
+}
+
+void add_counters(benchmark::State& state, const SupportGraph& g, const SolverReport& r) {
+  state.counters["bonds"] = g.bond_count();
+  state.counters["unknowns"] = r.unknowns;
+  state.counters["iterations"] = r.iterations;
+  state.counters["solves"] = r.solves;
+  state.counters["residual"] = r.residual;
+  state.counters["converged"] = r.converged ? 1 : 0;
+}
+
+void evaluate_wall(benchmark::State& state, const char* model_name) {
+  const SupportGraph& g = wall(static_cast<int>(state.range(0)));
+  const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
+  SolverReport report;
+  for (auto _ : state) {
+    Result<StressResult> r = model->evaluate(g, Loads{}, Material{});
+    benchmark::DoNotOptimize(r);
+    report = r->report;
+  }
+  add_counters(state, g, report);
+}
+
+void cascade_wall(benchmark::State& state, const char* model_name) {
+  const SupportGraph& g = wall(static_cast<int>(state.range(0)));
+  const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
+  const std::vector<int> broken = hole(g);
+  Material weak;  // a weak mortar, so that the hole makes something else fail
+  weak.tensile_strength = 2e4;
+  SolverReport report;
+  int rounds = 0;
+  for (auto _ : state) {
+    Result<PropagationResult> r = propagate(*model, g, Loads{}, weak, broken);
+    benchmark::DoNotOptimize(r);
+    report = r->report;
+    rounds = r->rounds;
+  }
+  add_counters(state, g, report);
+  state.counters["rounds"] = rounds;
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(evaluate_wall, connection_count, "connection-count")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(evaluate_wall, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(evaluate_wall, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cascade_wall, connection_count, "connection-count")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cascade_wall, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cascade_wall, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
