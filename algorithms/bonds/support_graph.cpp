@@ -15,6 +15,28 @@ namespace shatter {
 
 namespace {
 
+/// Convex hull, counter-clockwise, of 2D points (monotone chain); collinear points dropped.
+std::vector<Vec2> convex_hull(std::vector<Vec2> points) {
+  std::sort(points.begin(), points.end(),
+            [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
+  if (points.size() < 3) return points;
+  const auto cross = [](const Vec2& o, const Vec2& a, const Vec2& b) {
+    return (a.x() - o.x()) * (b.y() - o.y()) - (a.y() - o.y()) * (b.x() - o.x());
+  };
+  std::vector<Vec2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    while (k >= 2 && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, t = k + 1; i-- > 0;) {
+    while (k >= t && cross(hull[k - 2], hull[k - 1], points[i]) <= 0) --k;
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
 /// A triangle offered for contact, with what the pairing needs.
 struct Face {
   int fragment = 0;
@@ -167,6 +189,13 @@ bool make_bond(const std::vector<Face>& faces, const std::vector<FacePair>& grou
     bond.fibre_2 = std::max(bond.fibre_2, std::abs(d.dot(s.axis_1)));  // distance from axis_2
     bond.radius = std::max(bond.radius, d.norm());
   }
+  std::vector<Vec2> in_axes;
+  in_axes.reserve(corners.size());
+  for (const Vec2& q : corners) {
+    const Vec2 d = q - s.centroid;
+    in_axes.emplace_back(d.dot(s.axis_1), d.dot(s.axis_2));
+  }
+  bond.section = convex_hull(std::move(in_axes));
   // Spring length: the two bodies' centroids to the contact plane, never below 1e-3 of sqrt(area).
   const double to_a = std::abs(n.dot(bond.centroid - graph.nodes[static_cast<std::size_t>(bond.a)].centroid));
   const double to_b = std::abs(n.dot(graph.nodes[static_cast<std::size_t>(bond.b)].centroid - bond.centroid));

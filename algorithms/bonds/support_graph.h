@@ -46,6 +46,11 @@ struct Bond {
   double fibre_2 = 0.0;               ///< c_2: largest distance of the region from axis_2, m
   double radius = 0.0;                ///< r_max: largest distance of the region from its centroid, m
   double length = 0.0;                ///< characteristic length: centroid a to plane + plane to centroid b, m
+  /// Convex hull of the contact region, counter-clockwise, as (distance along axis_1, distance along
+  /// axis_2) from the centroid, m. A linear stress field over the region peaks at one of these points,
+  /// so the peak normal stress is exact for any section shape. Empty for bonds built by hand: the
+  /// fibre distances are used then.
+  std::vector<Vec2> section;
 };
 
 /// Nodes, bonds and per-node adjacency.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace shatter {
 
@@ -23,10 +24,28 @@ BondStress bond_stress(const Bond& bond, const BondForces& forces, const Materia
     return inertia > 0.0 ? std::abs(moment) * fibre / inertia : 0.0;
   };
   const double axial = forces.normal / bond.area;
-  const double flexural = bending(forces.moment_1, bond.fibre_1, bond.moment_1) +
-                          bending(forces.moment_2, bond.fibre_2, bond.moment_2);
-  const double tension_fibre = axial + flexural;
-  const double compression_fibre = axial - flexural;
+  double tension_fibre = 0.0;
+  double compression_fibre = 0.0;
+  if (!bond.section.empty() && bond.moment_1 > 0.0 && bond.moment_2 > 0.0) {
+    // The traction sigma(p) = N/A + (M_1/I_1) p_2 - (M_2/I_2) p_1 is linear over the section, so its
+    // extremes are at hull vertices (p_1 along axis_1, p_2 along axis_2, from the centroid).
+    const double k1 = forces.moment_1 / bond.moment_1;
+    const double k2 = -forces.moment_2 / bond.moment_2;
+    double hi = -std::numeric_limits<double>::infinity();
+    double lo = std::numeric_limits<double>::infinity();
+    for (const Vec2& p : bond.section) {
+      const double b = k1 * p.y() + k2 * p.x();
+      hi = std::max(hi, b);
+      lo = std::min(lo, b);
+    }
+    tension_fibre = axial + std::max(hi, 0.0);
+    compression_fibre = axial + std::min(lo, 0.0);
+  } else {
+    const double flexural = bending(forces.moment_1, bond.fibre_1, bond.moment_1) +
+                            bending(forces.moment_2, bond.fibre_2, bond.moment_2);
+    tension_fibre = axial + flexural;
+    compression_fibre = axial - flexural;
+  }
   s.tensile = std::abs(tension_fibre) >= std::abs(compression_fibre) && tension_fibre > 0.0;
   s.sigma = std::max(std::abs(tension_fibre), std::abs(compression_fibre));
   s.tau = s.shear_force / bond.area +

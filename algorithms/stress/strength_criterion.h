@@ -1,12 +1,15 @@
 #pragma once
 /// From a bond's internal forces to its peak stresses and its utilization under Tresca or von Mises.
 ///
-/// Peak normal stress (beam theory over the contact section, principal axes 1 and 2):
-///   bending part  s_b = |M_1| c_1 / I_1 + |M_2| c_2 / I_2   (c_i: largest distance from axis i)
-///   tension fibre s_t = N / A + s_b,   compression fibre s_c = N / A - s_b   (N > 0 in tension).
+/// Peak normal stress (beam theory over the contact section, principal axes 1 and 2): the traction
+///   sigma(p) = N / A + (M_1 / I_1) p_2 - (M_2 / I_2) p_1        (N > 0 in tension)
+/// is linear over the section, so its largest and smallest values are at vertices of the section's
+/// convex hull (Bond::section): tension fibre s_t = max(N/A, max sigma), compression fibre
+/// s_c = min(N/A, min sigma). This is M c / I exactly for any section shape, including sections whose
+/// principal axes are not unique (squares, discs: I_1 = I_2). Bonds built by hand without a hull use
+/// s_b = |M_1| c_1 / I_1 + |M_2| c_2 / I_2 with s_t = N/A + s_b, s_c = N/A - s_b (conservative).
 /// Both extreme fibres are checked: the tension one against the tensile strength, the compression one
-/// against the compressive strength. Using the largest distance on both sides of each axis is exact
-/// for sections symmetric about their principal axes (rectangles, discs) and conservative otherwise.
+/// against the compressive strength.
 /// Shear: tau = V / A + |T| r_max / J, the average shear (not the 1.5 V / A peak of a rectangle: bond
 /// sections are arbitrary polygons, and the average is what the section carries everywhere) plus the
 /// torsion of a circular section of radius r_max (exact for discs, conservative for compact sections).

@@ -18,6 +18,8 @@ int fail_input(std::string_view message);
 void add_list_command(CLI::App& app, int& exit_code);
 /// `shatterbench fracture`.
 void add_fracture_command(CLI::App& app, int& exit_code);
+/// `shatterbench stress`.
+void add_stress_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
 void add_table_command(CLI::App& app, int& exit_code);
 

@@ -13,6 +13,9 @@ void add_list_command(CLI::App& app, int& exit_code) {
     fmt::print("fracturers:\n");
     for (const std::string& name : r.fracturers.names())
       fmt::print("  {:<18} {}\n", name, r.fracturers.description(name));
+    fmt::print("stress models:\n");
+    for (const std::string& name : r.stress_models.names())
+      fmt::print("  {:<18} {}\n", name, r.stress_models.description(name));
     fmt::print("built-in cases:\n");
     for (const BuiltinCase& c : list_builtin_cases()) fmt::print("  {:<18} {}\n", c.name, c.description);
     exit_code = exit_ok;

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   int exit_code = exit_ok;
   add_list_command(app, exit_code);
   add_fracture_command(app, exit_code);
+  add_stress_command(app, exit_code);
   add_table_command(app, exit_code);
   try {
     app.parse(argc, argv);

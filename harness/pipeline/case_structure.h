@@ -1,0 +1,29 @@
+#pragma once
+/// A case's structure before any impact: the solid, its pre-fracture and the support graph.
+
+#include "algorithms/bonds/support_graph.h"
+#include "algorithms/core/result.h"
+#include "algorithms/fracture/fracturer.h"
+#include "harness/cases/case.h"
+#include "harness/cases/load_solid.h"
+
+#include <vector>
+
+namespace shatter {
+
+/// The pre-fractured structure of a case.
+struct CaseStructure {
+  Solid solid;                       ///< the validated input solid
+  std::vector<Fragment> fragments;   ///< pre-fracture fragments
+  SupportGraph graph;                ///< bonds between the fragments, anchors from the case
+};
+
+/// Pre-fractures `c`'s solid (explicit planes with the plane-slice kernel, or the named fracturer) and
+/// builds its support graph at the case's density. Errors name the case key: an unknown fracturer
+/// (`prefracture.fracturer`), an anchor region that touches no fragment (`anchors[i]`).
+Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid);
+
+/// The whole structure of `c`.
+Result<CaseStructure> build_case_structure(const Case& c);
+
+}  // namespace shatter
