@@ -60,7 +60,10 @@ TEST_CASE("cli: stress on the built-in cantilever matches beam theory at every b
 
 TEST_CASE("cli: a weak cantilever breaks at the root and drops the span", "[cli][stress]") {
   nlohmann::json c = small_cantilever();
-  c["material"]["tensile_strength"] = 1000.0;  // far below the root stress
+  // Just below the root bond's peak stress M c / I (the next bond carries less than half of it).
+  const double moment = 2000 * 9.81 * 0.2 * 0.3 * 1.5 * 1.5 / 2;
+  const double root_sigma = moment * 0.15 / (0.2 * 0.3 * 0.3 * 0.3 / 12);
+  c["material"]["tensile_strength"] = 0.95 * root_sigma;
   const auto run = test::run_cli("stress --json --case " + write_case("weak", c).string());
   REQUIRE(run.exit_code == 0);
   const auto j = nlohmann::json::parse(run.out);
