@@ -1,5 +1,7 @@
 #include "algorithms/core/mesh_validation.h"
 
+#include "algorithms/core/pinched_vertices.h"
+
 #include "algorithms/core/mass_properties.h"
 
 #include <Eigen/Geometry>
@@ -210,6 +212,9 @@ Result<ValidationReport> validate_solid(Mesh& mesh, const std::string& what) {
       return fail("not 2-manifold: " + edge + " is used by " + std::to_string(edges.uses[e]) + " triangles");
     return fail("inconsistent orientation at " + edge);
   }
+
+  // Sheets meeting at a single vertex (often made so by merging coincident vertices) get a vertex each.
+  report.split_pinched_vertices = split_pinched_vertices(mesh);
 
   // A closed mesh whose volume rounds to nothing relative to its size is flat: reject it.
   const double volume = signed_volume(mesh);

@@ -13,14 +13,16 @@ struct ValidationReport {
   bool flipped = false;            ///< the mesh was closed but oriented inward; its faces were reversed
   int removed_unused_vertices = 0; ///< vertices no triangle referenced, dropped
   int merged_duplicate_vertices = 0;  ///< vertices with identical coordinates, merged into one
+  int split_pinched_vertices = 0;  ///< copies made so that sheets meeting at one vertex each have their own
 };
 
 /// Checks that `mesh` is a valid solid and normalises it in place: finite coordinates; no triangle
 /// with repeated indices or zero area (exactly collinear corners); every undirected edge shared by
-/// exactly two triangles with opposite directions (closed, 2-manifold, consistently oriented);
-/// positive volume (an inward mesh is flipped and reported). Unused vertices are dropped and
-/// duplicate vertices merged before the checks. `what` names the input in the error message
-/// (for example the file name).
+/// exactly two triangles with opposite directions (closed, edge-manifold, consistently oriented);
+/// positive volume (an inward mesh is flipped and reported). Unused vertices are dropped and duplicate
+/// vertices merged before the checks; a vertex where several sheets of triangles meet at one point
+/// then gets one copy per sheet (pinched_vertices.h), so a valid solid is a 2-manifold. `what` names
+/// the input in the error message (for example the file name).
 Result<ValidationReport> validate_solid(Mesh& mesh, const std::string& what);
 
 /// True when every undirected edge is used by exactly two triangles in opposite directions.

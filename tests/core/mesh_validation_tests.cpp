@@ -161,3 +161,26 @@ TEST_CASE("validation: an open real mesh is reported as not closed", "[validatio
   REQUIRE(mesh.ok());
   CHECK_THAT(error_of(*mesh, "mushroom.off"), StartsWith("mushroom.off: not closed: edge ("));
 }
+
+TEST_CASE("validation: two tetrahedra touching at one vertex get a vertex each", "[validation]") {
+  // Two tetrahedra sharing only the apex (0,0,0): closed and edge-manifold, pinched at the apex.
+  shatter::Mesh m;
+  for (const shatter::Vec3& p : {shatter::Vec3(0, 0, 0), shatter::Vec3(1, 0, 0), shatter::Vec3(0, 1, 0),
+                                 shatter::Vec3(0, 0, 1), shatter::Vec3(-1, 0, 0), shatter::Vec3(0, -1, 0),
+                                 shatter::Vec3(0, 0, -1)})
+    m.add_vertex(p);
+  for (const shatter::Triangle& t : {shatter::Triangle{0, 2, 1}, shatter::Triangle{0, 1, 3}, shatter::Triangle{0, 3, 2},
+                                     shatter::Triangle{1, 2, 3}, shatter::Triangle{0, 4, 5}, shatter::Triangle{0, 6, 4},
+                                     shatter::Triangle{0, 5, 6}, shatter::Triangle{4, 6, 5}})
+    m.add_triangle(t[0], t[1], t[2], shatter::FaceTag::surface);
+  auto report = shatter::validate_solid(m, "pinched");
+  REQUIRE(report.ok());
+  CHECK(report->split_pinched_vertices == 1);
+  CHECK(m.vertices.size() == 8);
+  CHECK(shatter::is_closed_and_oriented(m));
+  // Each apex copy is now used by exactly one tetrahedron's three faces.
+  int uses_of_apex = 0;
+  for (const shatter::Triangle& t : m.triangles)
+    for (int k = 0; k < 3; ++k) uses_of_apex += t[k] == 0;
+  CHECK(uses_of_apex == 3);
+}
