@@ -62,6 +62,15 @@ struct TubeSpec {
   int segments = 32;                 ///< around the axis, >= 3
 };
 
+/// `mesh.prism`: a profile in the x-z plane (an elevation: outline and holes, e.g. a wall with a
+/// door or an arch) extruded along y over `depth`, centred on `y`.
+struct PrismSpec {
+  std::vector<Vec2> outline;               ///< (x, z) corners of the outer boundary, m, >= 3, either winding
+  std::vector<std::vector<Vec2>> holes;    ///< (x, z) corners of each opening, m, inside the outline
+  double depth = 0.3;                      ///< extent along y, m, > 0
+  double y = 0.0;                          ///< centre of the extent along y, m
+};
+
 /// `mesh.file`: a mesh file, transformed as p' = R (scale p) + translate.
 struct MeshFileSpec {
   std::string file;                  ///< as written in the case file
@@ -72,7 +81,7 @@ struct MeshFileSpec {
 };
 
 /// What the case's solid is made from.
-using MeshSpec = std::variant<BoxSpec, SphereSpec, CylinderSpec, TorusSpec, TubeSpec, MeshFileSpec>;
+using MeshSpec = std::variant<BoxSpec, SphereSpec, CylinderSpec, TorusSpec, TubeSpec, PrismSpec, MeshFileSpec>;
 
 /// `prefracture`: either a fracturer run (`fracturer`, `fragments`, `seed`) or explicit `planes`.
 struct PrefractureSpec {

@@ -1,5 +1,7 @@
 #include "harness/cases/case_mesh.h"
 
+#include "harness/cases/prism_mesh.h"
+
 #include "algorithms/core/mesh_io.h"
 #include "algorithms/core/primitives.h"
 
@@ -141,14 +143,14 @@ std::pair<double, double> cos_sin_deg(double degrees) {
 }  // namespace
 
 MeshSpec read_mesh_spec(JsonReader& r, const json& value, std::string_view path, const fs::path& case_dir) {
-  if (!r.object(value, path, {"box", "sphere", "cylinder", "torus", "tube", "file", "scale", "rotate", "translate"}))
+  if (!r.object(value, path, {"box", "sphere", "cylinder", "torus", "tube", "prism", "file", "scale", "rotate", "translate"}))
     return {};
-  const char* primitives[] = {"box", "sphere", "cylinder", "torus", "tube", "file"};
+  const char* primitives[] = {"box", "sphere", "cylinder", "torus", "tube", "prism", "file"};
   std::vector<std::string_view> given;
   for (const char* key : primitives)
     if (value.contains(key)) given.emplace_back(key);
   if (given.size() != 1) {
-    r.fail(path, given.empty() ? "expected one of box, sphere, cylinder, torus, tube, file"
+    r.fail(path, given.empty() ? "expected one of box, sphere, cylinder, torus, tube, prism, file"
                                : fmt::format("\"{}\" and \"{}\" are exclusive: give one", given[0], given[1]));
     return {};
   }
@@ -167,6 +169,7 @@ MeshSpec read_mesh_spec(JsonReader& r, const json& value, std::string_view path,
   if (kind == "cylinder") return read_cylinder(r, v, at);
   if (kind == "torus") return read_torus(r, v, at);
   if (kind == "tube") return read_tube(r, v, at);
+  if (kind == "prism") return read_prism(r, v, at);
   return read_file_spec(r, value, path, case_dir);
 }
 
@@ -190,6 +193,7 @@ Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what) {
     return make_torus(s->major_radius, s->minor_radius, s->major_segments, s->minor_segments, s->center);
   if (const auto* s = std::get_if<TubeSpec>(&spec))
     return make_tube(s->inner_radius, s->outer_radius, s->height, s->segments, s->center);
+  if (const auto* s = std::get_if<PrismSpec>(&spec)) return make_prism(*s, what);
   const auto& file = std::get<MeshFileSpec>(spec);
   Result<Mesh> mesh = read_mesh(file.path);
   if (!mesh) return Error{fmt::format("{}: {}", what, mesh.error().message)};

@@ -285,3 +285,24 @@ TEST_CASE("cases: find_case finds built-in cases by name and files by path", "[c
     CHECK_FALSE(it->description.empty());
   }
 }
+
+TEST_CASE("cases: the wall's window is a real opening", "[cases]") {
+  auto c = shatter::find_case("wall");
+  REQUIRE(c.ok());
+  auto solid = shatter::build_case_solid(*c);
+  REQUIRE(solid.ok());
+  // (4 x 3 - 1 x 1.2) m^2 of elevation, 0.3 m deep.
+  CHECK(solid->mass.volume == Approx((4.0 * 3.0 - 1.0 * 1.2) * 0.3).epsilon(1e-12));
+  // Its surface: both faces, the outer rim and the window's reveal.
+  CHECK(solid->area == Approx(2 * (12.0 - 1.2) + 0.3 * (2 * 4 + 2 * 3) + 0.3 * (2 * 1.0 + 2 * 1.2)).epsilon(1e-12));
+  CHECK_FALSE(solid->report.flipped);
+}
+
+TEST_CASE("cases: a prism whose outline crosses itself is refused", "[cases]") {
+  const std::string text = R"({"mesh": {"prism": {"outline": [[0, 0], [1, 1], [1, 0], [0, 1]], "depth": 1}}})";
+  auto c = shatter::parse_case(text, "bowtie.json");
+  REQUIRE(c.ok());
+  auto solid = shatter::build_case_solid(*c);
+  REQUIRE_FALSE(solid.ok());
+  CHECK_THAT(solid.error().message, Catch::Contains("prism"));
+}
