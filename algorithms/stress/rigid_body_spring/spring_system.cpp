@@ -171,7 +171,10 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
         for (int step = 0; step < settings.refinement_steps; ++step) u += ldlt.solve(f - stiffness * u);
       }
     } else {
-      // Large systems: Jacobi-preconditioned CG, warm-started from the previous displacements.
+      // Large systems: Jacobi-preconditioned CG, warm-started from the previous displacements. The
+      // assembled 6 x 6 blocks hold many exact zeros (a bond aligned with the axes couples few of its
+      // 36 entries); dropping them is exact and makes every product about 3 times cheaper.
+      stiffness.prune(0.0);
       Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg(stiffness);
       cg.setTolerance(settings.cg_tolerance);
       cg.setMaxIterations(settings.cg_max_iterations);

@@ -22,12 +22,13 @@
 
 namespace shatter {
 
-/// Solver options. Direct below the threshold: exact to round-off (the beam tests need 1e-9) and, on
-/// block walls measured with benchmarks/stress_benchmarks.cpp, no slower than Jacobi-CG up to ~3,000
-/// unknowns (7.4 ms LDLT against 6.2 ms CG at 2,898); above it the LDLT fill grows faster than CG's
-/// iteration count, and CG can be warm-started after a break.
+/// Solver options. Direct below the threshold: exact to round-off (the beam tests need 1e-9). Above it
+/// Jacobi-CG on the matrix with its exact zeros dropped: on the 23 x 22 block wall (2,898 unknowns)
+/// CG takes ~3 ms (156 iterations) against ~7-13 ms for SimplicialLDLT with AMD (182k entries in L);
+/// on the 71 x 71 wall (29,820 unknowns) ~110 ms (521 iterations) against 300-450 ms to factor
+/// (3.4M entries in L). See docs/stress.md.
 struct SpringSolverSettings {
-  int direct_max_unknowns = 3000;     ///< sparse LDLT up to this many unknowns, conjugate gradients above
+  int direct_max_unknowns = 1000;     ///< sparse LDLT up to this many unknowns, conjugate gradients above
   int refinement_steps = 2;           ///< iterative-refinement steps after a direct solve
   double cg_tolerance = 1e-10;        ///< relative residual |K u - f| / |f| at which CG stops
   int cg_max_iterations = 20000;      ///< CG gives up (converged = false) after this many iterations
