@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -21,6 +22,8 @@ struct FractureOptions {
   int fragments = 10;
   std::uint64_t seed = 1;
   std::string out;
+  std::vector<double> impact;  // x, y, z; empty: no impact
+  double radius = 0.0;
 };
 
 int run_fracture(const FractureOptions& o) {
@@ -32,6 +35,12 @@ int run_fracture(const FractureOptions& o) {
   FractureParams params;
   params.fragments = o.fragments;
   params.seed = o.seed;
+  if (!o.impact.empty()) {
+    Impact impact;
+    impact.point = Vec3(o.impact[0], o.impact[1], o.impact[2]);
+    impact.radius = o.radius;
+    params.impact = impact;
+  }
   const auto start = std::chrono::steady_clock::now();
   Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(solid->mesh, params);
   const auto stop = std::chrono::steady_clock::now();
@@ -79,6 +88,19 @@ void add_fracture_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--seed", options->seed, "Random seed (same seed, same fragments)")->capture_default_str();
   cmd->add_option("--out", options->out, "Folder for fragment_NNN.obj (nothing is written without it)");
+  cmd->add_option("--impact", options->impact, "Impact point x,y,z (m): impact-aware fracturers refine around it")
+      ->delimiter(',')
+      ->expected(3);
+  cmd->add_option("--radius", options->radius, "Impact radius (m), with --impact")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            double value = 0.0;
+            return CLI::detail::lexical_cast(text, value) && value >= 0.0 && std::isfinite(value)
+                       ? std::string()
+                       : "must be a finite number >= 0, got " + text;
+          },
+          "NUMBER >= 0"))
+      ->needs("--impact");
   cmd->callback([options, &exit_code] { exit_code = run_fracture(*options); });
 }
 

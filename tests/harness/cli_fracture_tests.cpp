@@ -115,6 +115,17 @@ TEST_CASE("cli: bad input exits 2 with one line and no output files", "[cli]") {
   SECTION("a missing file") {
     require_bad_input(test::run_cli("fracture --mesh " + (dir / "absent.off").string() + out_flag), "absent.off");
   }
+  SECTION("an impact with two coordinates") {
+    REQUIRE(write_off(make_box(Vec3(1, 1, 1)), dir / "box.off").ok());
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "box.off").string() + " --impact 0,0" + out_flag),
+                      "--impact");
+  }
+  SECTION("a negative impact radius") {
+    REQUIRE(write_off(make_box(Vec3(1, 1, 1)), dir / "box.off").ok());
+    require_bad_input(test::run_cli("fracture --mesh " + (dir / "box.off").string() +
+                                    " --impact 0,0,0 --radius -1" + out_flag),
+                      "--radius");
+  }
   SECTION("an unknown flag") {
     require_bad_input(test::run_cli("fracture --mesh x.off --frobnicate 3"), "frobnicate");
   }
