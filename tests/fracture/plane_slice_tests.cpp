@@ -4,6 +4,7 @@
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
+#include "algorithms/fracture/plane_slice/mesh_slicer.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "tests/support/shapes.h"
@@ -12,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <vector>
 
 using namespace shatter;
@@ -187,4 +189,37 @@ TEST_CASE("plane-slice: bad parameters are errors, not crashes", "[plane-slice]"
   CHECK_FALSE(PlaneSliceFracturer().fracture_by_planes(test::make_unit_cube(), zero_normal).ok());
   const std::vector<Plane> nan_plane = {{Vec3(std::nan(""), 0, 0), Vec3::UnitX()}};
   CHECK_FALSE(PlaneSliceFracturer().fracture_by_planes(test::make_unit_cube(), nan_plane).ok());
+}
+
+TEST_CASE("plane-slice: a cut within rounding distance of an earlier cut never opens a piece", "[plane-slice]") {
+  // A Voronoi cell piece whose earlier cut lies within rounding distance of the plane y = 0.0431...:
+  // two outline points round to one position. The slicer must refuse (the piece stays whole and
+  // closed) rather than return open halves. Fixture format: V F, V lines of hex-float x y z, F lines.
+  std::FILE* f = std::fopen(SHATTER_SOURCE_DIR "/tests/fixtures/coincident_cut_piece.txt", "r");
+  REQUIRE(f != nullptr);
+  std::size_t nv = 0, nf = 0;
+  REQUIRE(std::fscanf(f, "%zu %zu", &nv, &nf) == 2);
+  Mesh piece;
+  for (std::size_t i = 0; i < nv; ++i) {
+    double x, y, z;
+    REQUIRE(std::fscanf(f, "%la %la %la", &x, &y, &z) == 3);
+    piece.add_vertex({x, y, z});
+  }
+  for (std::size_t i = 0; i < nf; ++i) {
+    int a, b, c;
+    REQUIRE(std::fscanf(f, "%d %d %d", &a, &b, &c) == 3);
+    piece.add_triangle(a, b, c, FaceTag::surface);
+  }
+  std::fclose(f);
+  REQUIRE(is_closed_and_oriented(piece));
+  MeshSlicer slicer;
+  Mesh below, above;
+  const SliceOutcome outcome = slicer.slice(piece, {Vec3(0, 0.04318053211960312, 0), Vec3(0, 1, 0)}, below, above);
+  if (outcome == SliceOutcome::cut) {
+    CHECK(is_closed_and_oriented(below));
+    CHECK(is_closed_and_oriented(above));
+  } else {
+    CHECK(outcome == SliceOutcome::failed);
+    CHECK_FALSE(slicer.error().empty());
+  }
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace shatter {
 namespace {
@@ -181,6 +182,20 @@ bool MeshSlicer::add_cap() {
     for (int i = 0; i < count; ++i) cap_edges_.push_back({cap_point(b), cap_point(a)});
   }
   if (cap_edges_.empty()) return true;
+  // Two outline points that round to the same position (a cut within rounding distance of an earlier
+  // cut in the same plane) would be merged by the triangulation and leave both halves open: refuse.
+  cap_order_.resize(cap_points_.size());
+  std::iota(cap_order_.begin(), cap_order_.end(), 0);
+  std::sort(cap_order_.begin(), cap_order_.end(), [&](std::int32_t a, std::int32_t b) {
+    const Vec2& p = cap_points_[static_cast<std::size_t>(a)];
+    const Vec2& q = cap_points_[static_cast<std::size_t>(b)];
+    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+  });
+  for (std::size_t i = 1; i < cap_order_.size(); ++i)
+    if (cap_points_[static_cast<std::size_t>(cap_order_[i])] == cap_points_[static_cast<std::size_t>(cap_order_[i - 1])]) {
+      error_ = "two points of the cut outline coincide after rounding";
+      return false;
+    }
   const CapTriangulation cap = triangulate_cap(cap_points_, cap_edges_);
   if (!cap.ok) {
     error_ = "cap triangulation failed: " + cap.error;

@@ -29,7 +29,8 @@ enum class SliceOutcome {
   cut,         ///< both halves non-empty
   all_below,   ///< the plane does not cut the mesh; nothing written
   all_above,   ///< the plane does not cut the mesh; nothing written
-  failed,      ///< the cut outline could not be capped (crossing constraints after rounding)
+  failed,      ///< the cut outline could not be capped (outline points coinciding or edges crossing
+               ///< after rounding); nothing written, so a caller never gets an open half
 };
 
 /// Splits closed meshes by planes.
@@ -72,6 +73,7 @@ class MeshSlicer {
   std::unordered_map<std::int32_t, std::int32_t> cap_point_of_ref_;
   std::vector<Vec2> cap_points_;
   std::vector<CapEdge> cap_edges_;
+  std::vector<std::int32_t> cap_order_;                 // cap points sorted by position
   std::string error_;
 };
 
