@@ -2,6 +2,7 @@
 
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+#include "algorithms/fracture/voronoi/voronoi_fracturer.h"
 #include "algorithms/stress/connection_count/connection_count_model.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 
@@ -10,6 +11,7 @@ namespace shatter {
 void register_all(Registries& registries) {
   register_plane_slice(registries.fracturers);
   register_cgal_clip(registries.fracturers);
+  register_voronoi(registries.fracturers);
   register_connection_count(registries.stress_models);
   register_tresca(registries.stress_models);
   register_von_mises(registries.stress_models);

@@ -1,0 +1,36 @@
+#pragma once
+/// The Voronoi diagram of the sites restricted to a box, as approximate convex cells: which bisector
+/// planes to try for each cell, in which order, and how far each cell reaches.
+///
+/// Design note: the cells are computed in plain double (Sutherland-Hodgman clipping of a box by the
+/// bisector planes), so they are only used for decisions that stay valid under a margin: the bounding
+/// box of a cell, inflated by `margin`, certainly holds the exact cell. The exact cutting of the mesh
+/// is done by MeshSlicer on the bisector planes themselves (bisector_plane), never on these polygons.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/plane.h"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace shatter {
+
+/// The bisector plane between sites i and j (m): its negative side is the half-space closer to
+/// sites[i]. The plane of (j, i) is the same point with the opposite normal, so the two cells that
+/// share it get exactly complementary side tests.
+Plane bisector_plane(std::span<const Vec3> sites, int i, int j);
+
+/// One site's cell: the other sites by increasing distance, and the cell's bounding box.
+struct VoronoiCell {
+  /// Other site indices, nearest first (ties by index), up to the farthest whose bisector can bound
+  /// the cell inside the box: every face of the cell lies on the bisector of one of them.
+  std::vector<std::int32_t> neighbours;
+  Aabb bounds;                           ///< box of the cell clipped to the input box, inflated, m
+};
+
+/// Cells of `sites` (#S distinct finite points, m) clipped to `box` (m), each box and reach inflated
+/// by `margin` (m). O(#S^2 log #S) time for the neighbour orders, O(#S) memory per cell at most.
+std::vector<VoronoiCell> voronoi_cells(std::span<const Vec3> sites, const Aabb& box, double margin);
+
+}  // namespace shatter

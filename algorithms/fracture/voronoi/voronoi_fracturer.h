@@ -1,0 +1,45 @@
+#pragma once
+/// voronoi: sites inside the solid (uniform, or clustered around the impact), each site's Voronoi cell
+/// cut out of the solid by its bisector planes with the slicing kernel (MeshSlicer), disconnected
+/// parts of a cell split into their own fragments.
+
+#include "algorithms/fracture/fracturer.h"
+#include "algorithms/fracture/fracturer_registry.h"
+#include "algorithms/fracture/voronoi/voronoi_sites.h"
+
+#include <span>
+
+namespace shatter {
+
+/// Settings of the voronoi fracturer (plain data; every field has a default).
+struct VoronoiSettings {
+  /// Where the sites go (impact share, draw budget).
+  SiteSettings sites;
+  /// Cells per leaf of the site tree: below this many, cells are cut from their node's piece
+  /// directly (>= 1; default 1). Larger values trade tree cuts for longer bisector sequences.
+  int leaf_cells = 1;
+};
+
+/// The voronoi fracturer: one fragment per connected part of each site's cell inside the solid.
+class VoronoiFracturer final : public Fracturer {
+ public:
+  /// A fracturer with the given settings (checked when fracturing).
+  explicit VoronoiFracturer(VoronoiSettings settings = {}) : settings_(settings) {}
+  [[nodiscard]] std::string_view name() const override { return "voronoi"; }
+  /// Places `params.fragments` sites (voronoi_sites.h) and cuts `solid` into their cells.
+  [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
+                                                       const FractureParams& params) const override;
+  /// Cuts `solid` into the Voronoi cells of the given sites (#S distinct finite points, m; sites
+  /// outside the solid are allowed, their cells may miss it). Fragments come in site order, the parts
+  /// of one cell in connected_components order; cells that miss the solid give none.
+  [[nodiscard]] Result<std::vector<Fragment>> fracture_with_sites(const Mesh& solid,
+                                                                  std::span<const Vec3> sites) const;
+
+ private:
+  VoronoiSettings settings_;
+};
+
+/// Registers "voronoi".
+void register_voronoi(FracturerRegistry& registry);
+
+}  // namespace shatter
