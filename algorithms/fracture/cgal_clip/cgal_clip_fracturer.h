@@ -1,9 +1,10 @@
 #pragma once
 /// cgal-clip: the exact reference. The same cut schedule as plane-slice (recursive_slicing.h), each
-/// cut done by CGAL's Polygon_mesh_processing on an exact-constructions kernel. CGAL stays inside
-/// this folder's translation units.
+/// cut done by CGAL's Polygon_mesh_processing on an exact-constructions kernel; and the exact replay
+/// of a cell fracture (Voronoi) from its half-spaces. CGAL stays inside this folder's translation units.
 
 #include "algorithms/core/plane.h"
+#include "algorithms/fracture/convex_cell.h"
 #include "algorithms/fracture/fracturer.h"
 #include "algorithms/fracture/fracturer_registry.h"
 
@@ -20,6 +21,13 @@ class CgalClipFracturer final : public Fracturer {
   /// Cuts `solid` by each plane in turn, as PlaneSliceFracturer::fracture_by_planes.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid,
                                                                  std::span<const Plane> planes) const;
+  /// For each cell in order, the connected parts of (solid ∩ cell), ordered by order_parts
+  /// (recursive_slicing.h), appended; a cell that misses the solid gives nothing. Faces of the solid
+  /// keep their tags, faces made by a cell's planes are tagged cut. The contract a cell fracturer
+  /// follows so that its fragments match these one to one. Error for a non-finite plane or a zero
+  /// normal, a bad or self-intersecting solid, or a step CGAL cannot complete.
+  [[nodiscard]] Result<std::vector<Fragment>> fracture_by_cells(const Mesh& solid,
+                                                                std::span<const ConvexCell> cells) const;
 };
 
 /// Registers "cgal-clip".

@@ -1,0 +1,102 @@
+#pragma once
+/// Internals shared by the cgal-clip translation units: the exact mesh type (CGAL Surface_mesh over
+/// Epeck) with its "is_cut" face flag, the corefinement visitor that keeps that flag right, and the
+/// conversions between shatter meshes and exact pieces. Includes CGAL: only for files of this folder.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+#include "algorithms/fracture/fracturer.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/corefinement.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <stdexcept>
+#include <vector>
+
+namespace shatter::cgal_exact {
+
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
+using ExactPoint = Epeck::Point_3;
+using ExactPlane = Epeck::Plane_3;
+using SurfaceMesh = CGAL::Surface_mesh<ExactPoint>;
+using FaceIndex = SurfaceMesh::Face_index;
+using VertexIndex = SurfaceMesh::Vertex_index;
+using CutMap = SurfaceMesh::Property_map<FaceIndex, bool>;
+
+/// A step CGAL could not complete; turned into an Error at the fracturer's boundary.
+struct ClipFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// The "is_cut" flag of every face of `mesh` (created, false, when absent).
+inline CutMap cut_map(SurfaceMesh& mesh) { return mesh.add_property_map<FaceIndex, bool>("f:is_cut", false).first; }
+
+/// The exact plane {x : dot(normal, x - point) = 0} built from the same doubles (no rounding);
+/// its negative side is below.
+inline ExactPlane exact_plane(const Vec3& point, const Vec3& normal) {
+  return {ExactPoint(point.x(), point.y(), point.z()), Epeck::Vector_3(normal.x(), normal.y(), normal.z())};
+}
+
+/// The mesh being cut in place and the flag of the face currently being split.
+struct TagState {
+  const SurfaceMesh* mesh = nullptr;
+  CutMap is_cut;
+  bool split_flag = false;
+};
+
+/// Corefinement visitor that keeps "is_cut" right on a mesh cut in place (PMP::clip, or a Boolean
+/// operation whose output is its first input): a split face inherits the flag of the face it came
+/// from, a face copied from the other operand (the clipper, the cell) is a cut face, untouched faces
+/// keep their flag. CGAL copies the visitor, so the state lives outside it.
+struct ClipTagVisitor : PMP::Corefinement::Default_visitor<SurfaceMesh> {
+  TagState* state = nullptr;
+
+  void before_subface_creations(FaceIndex f_old, SurfaceMesh& tm) {
+    if (&tm == state->mesh) state->split_flag = state->is_cut[f_old];
+  }
+  void after_subface_created(FaceIndex f_new, SurfaceMesh& tm) {
+    if (&tm == state->mesh) state->is_cut[f_new] = state->split_flag;
+  }
+  void after_face_copy(FaceIndex f_old, const SurfaceMesh& source, FaceIndex f_new, SurfaceMesh& target) {
+    if (&target != state->mesh) return;
+    state->is_cut[f_new] = &source == state->mesh ? state->is_cut[f_old] : true;
+  }
+};
+
+/// One connected closed piece: an exact triangle mesh without garbage, with the face property
+/// "is_cut", its elements in a canonical order (see append_parts).
+struct Piece {
+  SurfaceMesh mesh;              ///< triangulated, canonical element order
+  Vec3 centroid = Vec3::Zero();  ///< volume centroid, m (cached: orderings ask for it repeatedly)
+};
+
+/// The minimal kernel order_parts (recursive_slicing.h) needs to sort pieces.
+struct PieceOrder {
+  using Piece = cgal_exact::Piece;
+  /// Cached volume centroid of `piece`, m.
+  [[nodiscard]] Vec3 centroid(const Piece& piece) const { return piece.centroid; }
+};
+
+/// Volume centroid of `mesh` by the divergence theorem in double; the vertex mean when the volume
+/// vanishes.
+Vec3 centroid_of(const SurfaceMesh& mesh);
+
+/// Appends the connected parts of the closed mesh `mesh` as pieces, each rebuilt in a canonical order
+/// (vertices in exact lexicographic order, faces sorted by vertex ranks), so that the output does not
+/// depend on the heap addresses CGAL's corefinement breaks ties with. Triangulates polygon faces.
+void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out);
+
+/// `solid` as one exact mesh (unused vertices dropped, tags kept as "is_cut"). Throws ClipFailure when
+/// the surface is not 2-manifold or intersects itself (CGAL's clip and corefinement require neither).
+SurfaceMesh exact_solid(const Mesh& solid);
+
+/// Converts one piece into a fragment: points rounded from their exact values (the same point gives
+/// the same doubles in every fragment), mass properties.
+Fragment to_fragment(Piece& piece);
+
+/// Checks the input solid at the API boundary: non-empty, one tag per triangle, finite, indices in range.
+Status check_solid(const Mesh& solid);
+
+}  // namespace shatter::cgal_exact
