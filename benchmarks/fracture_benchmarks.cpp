@@ -3,11 +3,15 @@
 // 25 and 100 fragments. Error figures ride along as counters, so every time has its accuracy next to it.
 //
 //   build/bin/shatter_benchmarks [--benchmark_filter=...] [--benchmark_repetitions=5]
+// Families: slice/ and fracture/ (plane-slice vs cgal-clip), voronoi/ (voronoi vs its exact cell replay).
 //
 // Meshes come from $SHATTER_MESH_DIR or <source>/data/meshes (scripts/fetch-meshes).
 
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+#include "algorithms/fracture/voronoi/voronoi_cells.h"
+#include "algorithms/fracture/voronoi/voronoi_fracturer.h"
+#include "algorithms/fracture/voronoi/voronoi_sites.h"
 #include "algorithms/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/metrics/fracture_metrics.h"
@@ -79,6 +83,36 @@ void fracture_into(benchmark::State& state, const Solid& solid, const std::strin
   state.counters["partition_error"] = m.partition_error;
 }
 
+/// voronoi's cells replayed exactly: the same sites and bisector planes, corefined by CGAL.
+void voronoi_replay(benchmark::State& state, const Solid& solid, int n) {
+  FractureParams params;
+  params.fragments = n;
+  params.seed = 1;
+  std::vector<Fragment> fragments;
+  for (auto _ : state) {
+    auto sites = sample_sites(solid.mesh, params);
+    if (!sites) {
+      state.SkipWithError(sites.error().message.c_str());
+      return;
+    }
+    std::vector<ConvexCell> cells(sites->size());
+    for (int i = 0; i < static_cast<int>(sites->size()); ++i)
+      for (int j = 0; j < static_cast<int>(sites->size()); ++j)
+        if (i != j) cells[static_cast<std::size_t>(i)].planes.push_back(bisector_plane(*sites, i, j));
+    auto out = CgalClipFracturer().fracture_by_cells(solid.mesh, cells);
+    if (!out) {
+      state.SkipWithError(out.error().message.c_str());
+      return;
+    }
+    fragments = std::move(*out);
+  }
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, n);
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
+  state.counters["fragments"] = static_cast<double>(fragments.size());
+  state.counters["volume_error"] = m.volume_error;
+  state.counters["partition_error"] = m.partition_error;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -103,6 +137,17 @@ int main(int argc, char** argv) {
                                      [s, algo, n](benchmark::State& st) { fracture_into(st, *s, algo, n); })
             ->Unit(benchmark::kMillisecond);
       }
+    }
+  }
+  for (const auto& [name, solid] : solids) {
+    const Solid* s = &solid;
+    for (int n : {5, 25, 100}) {
+      benchmark::RegisterBenchmark(("voronoi/" + name + "/voronoi/" + std::to_string(n)).c_str(),
+                                   [s, n](benchmark::State& st) { fracture_into(st, *s, "voronoi", n); })
+          ->Unit(benchmark::kMillisecond);
+      benchmark::RegisterBenchmark(("voronoi/" + name + "/cgal-replay/" + std::to_string(n)).c_str(),
+                                   [s, n](benchmark::State& st) { voronoi_replay(st, *s, n); })
+          ->Unit(benchmark::kMillisecond);
     }
   }
   benchmark::Initialize(&argc, argv);
