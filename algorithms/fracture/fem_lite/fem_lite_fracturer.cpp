@@ -1,0 +1,69 @@
+#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
+
+#include "algorithms/fracture/fem_lite/crack_plane_search.h"
+#include "algorithms/fracture/fem_lite/element_stress.h"
+#include "algorithms/fracture/fem_lite/fem_loads.h"
+#include "algorithms/fracture/fem_lite/hex_grid.h"
+#include "algorithms/fracture/fracture_limits.h"
+#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+
+#include <algorithm>
+#include <memory>
+#include <string>
+
+namespace shatter {
+
+Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params) const {
+  if (Status s = check_fracture_params(params); !s) return s.error();
+  if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
+  FemLiteAnalysis analysis;
+  if (params.fragments <= 1) {
+    analysis.fragments = 1;
+    return analysis;
+  }
+  const HexGrid grid = build_hex_grid(solid, settings_.resolution);
+  analysis.elements = static_cast<int>(grid.elements.size());
+  analysis.nodes = static_cast<int>(grid.nodes.size());
+  if (grid.elements.empty())
+    return Error{"fem-lite: no grid cell centre lies inside the solid at resolution " +
+                 std::to_string(settings_.resolution) + " (raise the resolution)"};
+  Result<FemLoads> loads = fem_loads(grid, settings_, params.impact);
+  if (!loads) return loads.error();
+  analysis.inertia_relief = loads->inertia_relief;
+  Result<FemSolution> solution = solve_elastic(grid, settings_.material, *loads);
+  if (!solution) return solution.error();
+  analysis.solve = solution->report;
+  const std::vector<ElementStress> stresses = element_stresses(grid, settings_.material, solution->displacements);
+  analysis.max_principal = stresses.empty() ? 0.0 : stresses[0].max_principal;
+  for (const ElementStress& s : stresses) analysis.max_principal = std::max(analysis.max_principal, s.max_principal);
+
+  CrackSearchOptions options;
+  options.fragments = params.fragments;
+  options.spacing = settings_.crack_spacing;
+  options.tensile_strength = settings_.material.tensile_strength;
+  options.seed = params.seed;
+  CrackSearch search = search_crack_planes(solid, grid, stresses, options);
+  analysis.planes = std::move(search.planes);
+  analysis.fragments = search.fragments;
+  analysis.over_strength = search.over_strength;
+  return analysis;
+}
+
+Result<std::vector<Plane>> FemLiteFracturer::crack_planes(const Mesh& solid, const FractureParams& params) const {
+  Result<FemLiteAnalysis> analysis = analyse(solid, params);
+  if (!analysis) return analysis.error();
+  return std::move(analysis->planes);
+}
+
+Result<std::vector<Fragment>> FemLiteFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
+  Result<std::vector<Plane>> planes = crack_planes(solid, params);
+  if (!planes) return planes.error();
+  return PlaneSliceFracturer().fracture_by_planes(solid, *planes);
+}
+
+void register_fem_lite(FracturerRegistry& registry) {
+  registry.add("fem-lite", "crack planes from a coarse linear-elastic FEM solve under the impact, plane-slice cuts",
+               [] { return std::make_unique<FemLiteFracturer>(); });
+}
+
+}  // namespace shatter

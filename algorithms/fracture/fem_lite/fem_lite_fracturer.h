@@ -1,0 +1,56 @@
+#pragma once
+/// fem-lite: a coarse linear-elastic finite-element solve of the piece under the impact and gravity
+/// (8-node bricks on a regular grid, Eigen sparse LDL^T), crack planes through the most stressed
+/// elements normal to their largest principal stress, the solid cut along them by the plane-slice
+/// kernel. The planes are exposed so that the exact reference (cgal-clip) can replay them.
+
+#include "algorithms/core/plane.h"
+#include "algorithms/fracture/fem_lite/elastic_solve.h"
+#include "algorithms/fracture/fem_lite/fem_lite_settings.h"
+#include "algorithms/fracture/fracturer.h"
+#include "algorithms/fracture/fracturer_registry.h"
+
+#include <vector>
+
+namespace shatter {
+
+/// Everything one fem-lite analysis found, for reports and the documentation's measurements.
+struct FemLiteAnalysis {
+  std::vector<Plane> planes;     ///< crack planes, most stressed first (m; normals unit)
+  int fragments = 0;             ///< fragments the planes cut the solid into
+  int elements = 0;              ///< kept grid cells
+  int nodes = 0;                 ///< grid nodes of the kept cells
+  int over_strength = 0;         ///< elements whose largest principal stress exceeds the tensile strength
+  double max_principal = 0.0;    ///< largest principal stress over the elements, Pa
+  bool inertia_relief = false;   ///< true when the piece had no support (free-body solve)
+  FemSolveReport solve;          ///< solver statistics (iterations, residual)
+};
+
+/// The fem-lite fracturer.
+class FemLiteFracturer final : public Fracturer {
+ public:
+  /// A fracturer with the default settings (resolution 12, concrete, no gravity, no support).
+  FemLiteFracturer() = default;
+  /// A fracturer with the given settings (checked when fracturing).
+  explicit FemLiteFracturer(FemLiteSettings settings) : settings_(std::move(settings)) {}
+  [[nodiscard]] std::string_view name() const override { return "fem-lite"; }
+  /// crack_planes() then PlaneSliceFracturer::fracture_by_planes.
+  [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
+                                                       const FractureParams& params) const override;
+  /// The crack planes of `solid` (closed, outward) under `params.impact` and gravity; cutting the
+  /// solid by all of them (every piece each plane crosses) gives at least params.fragments fragments
+  /// unless the grid runs out of candidate elements. Empty for one fragment.
+  [[nodiscard]] Result<std::vector<Plane>> crack_planes(const Mesh& solid, const FractureParams& params) const;
+  /// The full analysis behind crack_planes().
+  [[nodiscard]] Result<FemLiteAnalysis> analyse(const Mesh& solid, const FractureParams& params) const;
+  /// The settings.
+  [[nodiscard]] const FemLiteSettings& settings() const { return settings_; }
+
+ private:
+  FemLiteSettings settings_;
+};
+
+/// Registers "fem-lite" (default settings).
+void register_fem_lite(FracturerRegistry& registry);
+
+}  // namespace shatter

@@ -1,0 +1,39 @@
+#pragma once
+/// Settings of the fem-lite fracturer: plain data, every field with a unit and a default.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+#include "algorithms/stress/material.h"
+
+#include <vector>
+
+namespace shatter {
+
+/// The largest resolution fem-lite accepts (memory of the direct solve grows about as resolution^4).
+inline constexpr int kFemLiteMaxResolution = 128;
+
+/// Settings of the fem-lite fracturer (plain data; every field has a default).
+struct FemLiteSettings {
+  /// Cells along the longest axis of the solid's bounding box, in [2, kFemLiteMaxResolution];
+  /// default 16. The other axes get the nearest whole number of cells of the same size, at least 2.
+  /// The knob that trades time for accuracy.
+  int resolution = 16;
+  /// Elastic constants and strengths (default: concrete).
+  Material material;
+  /// Gravitational acceleration, m/s^2, world frame; default none.
+  Vec3 gravity = Vec3::Zero();
+  /// Regions (m, world) whose grid nodes are fixed in all three directions; default none, in which
+  /// case the model is solved free-floating by inertia relief (see fem_loads.h).
+  std::vector<Aabb> supports;
+  /// Contact time of the impact, s, > 0; the impact force is impulse / contact_time. Default one
+  /// frame at 60 Hz.
+  double contact_time = 1.0 / 60.0;
+  /// Smallest distance between a new crack's element centre and an earlier crack plane, in cells
+  /// (the cell's size along the earlier plane's normal), >= 0; default 1.
+  double crack_spacing = 1.0;
+};
+
+/// Error (naming the key) unless every field is finite and in range.
+Status check_fem_lite_settings(const FemLiteSettings& settings);
+
+}  // namespace shatter

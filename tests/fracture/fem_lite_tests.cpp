@@ -1,0 +1,208 @@
+// fem-lite: crack locations against beam theory (a cantilever cracks at the root, a simply supported
+// beam at mid-span, both across the axis), the free-body solve, the shared invariants on primitives
+// and a real mesh, determinism, and bad settings.
+
+#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_validation.h"
+#include "algorithms/core/primitives.h"
+#include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
+#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
+#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+#include "harness/metrics/fracture_metrics.h"
+#include "tests/support/mesh_fixtures.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+using namespace shatter;
+
+namespace {
+
+/// The beam [0, 4] x [0, 0.5] x [0, 0.5], m.
+Mesh make_beam() { return make_box(Vec3(4, 0.5, 0.5), Vec3(2, 0.25, 0.25)); }
+
+/// A box region: every coordinate in [lo, hi].
+Aabb region(const Vec3& lo, const Vec3& hi) {
+  Aabb box;
+  box.extend(lo);
+  box.extend(hi);
+  return box;
+}
+
+FractureParams downward_hit(const Vec3& point, int fragments, double radius = 0.0) {
+  FractureParams params;
+  params.fragments = fragments;
+  params.seed = 3;
+  params.impact = Impact{point, -Vec3::UnitZ(), 1000.0, radius};
+  return params;
+}
+
+/// Angle between the plane's normal and the x axis, degrees (sign ignored).
+double degrees_from_axis(const Plane& plane) {
+  return std::acos(std::min(1.0, std::abs(plane.normal.normalized().x()))) * 180.0 / M_PI;
+}
+
+/// Settings of the simply supported beam: the bottom edges at both ends fixed.
+FemLiteSettings simply_supported(int resolution) {
+  FemLiteSettings settings;
+  settings.resolution = resolution;
+  settings.supports = {region(Vec3(-1, -1, -1), Vec3(0.1, 1, 0.01)), region(Vec3(3.9, -1, -1), Vec3(5, 1, 0.01))};
+  return settings;
+}
+
+void require_valid_fracture(const Mesh& solid, const std::vector<Fragment>& fragments, int requested) {
+  CHECK(static_cast<int>(fragments.size()) >= requested);
+  for (const Fragment& f : fragments) REQUIRE(is_closed_and_oriented(f.mesh));
+  const FractureMetrics m = fracture_metrics(solid, mass_properties(solid), fragments, requested);
+  CHECK(m.volume_error <= 1e-9);
+  CHECK(m.partition_error == 0.0);
+  CHECK(m.all_closed);
+}
+
+}  // namespace
+
+TEST_CASE("fem-lite: a cantilever with a tip load cracks at the root, across the axis", "[fem-lite]") {
+  FemLiteSettings settings;
+  settings.supports = {region(Vec3(-1, -1, -1), Vec3(0.01, 1, 1))};
+  for (int resolution : {8, 12, 16}) {
+    settings.resolution = resolution;
+    auto analysis = FemLiteFracturer(settings).analyse(make_beam(), downward_hit(Vec3(4, 0.25, 0.5), 2));
+    REQUIRE(analysis.ok());
+    REQUIRE(!analysis->planes.empty());
+    const Plane& first = analysis->planes.front();
+    INFO("resolution " << resolution << ", first crack at x = " << first.point.x());
+    CHECK(first.point.x() < 0.15 * 4.0);
+    CHECK(degrees_from_axis(first) < 10.0);
+    CHECK(analysis->solve.residual < 1e-8);
+    CHECK_FALSE(analysis->inertia_relief);
+  }
+}
+
+TEST_CASE("fem-lite: a simply supported beam loaded at mid-span cracks at mid-span", "[fem-lite]") {
+  // From the default resolution (16) up, the crack normal is within 10 degrees of the axis. Coarser
+  // grids (docs/fem-lite.md: 12 and 19 degrees at 12 and 8) still find the location, not the angle.
+  for (int resolution : {8, 12, 16, 24}) {
+    auto analysis = FemLiteFracturer(simply_supported(resolution)).analyse(make_beam(), downward_hit(Vec3(2, 0.25, 0.5), 2));
+    REQUIRE(analysis.ok());
+    REQUIRE(!analysis->planes.empty());
+    const Plane& first = analysis->planes.front();
+    INFO("resolution " << resolution << ", first crack at x = " << first.point.x());
+    CHECK(std::abs(first.point.x() - 2.0) < 0.3);
+    CHECK(first.point.z() < 0.25);  // the tensile side
+    if (resolution >= FemLiteSettings{}.resolution) CHECK(degrees_from_axis(first) < 10.0);
+    CHECK(analysis->fragments >= 2);
+  }
+}
+
+TEST_CASE("fem-lite: a free piece is solved by inertia relief, gravity alone stresses nothing", "[fem-lite]") {
+  FemLiteSettings settings;
+  settings.gravity = Vec3(0, 0, -9.81);
+  FractureParams params;
+  params.fragments = 3;
+  auto still = FemLiteFracturer(settings).analyse(make_beam(), params);
+  REQUIRE(still.ok());
+  CHECK(still->inertia_relief);
+  CHECK(std::abs(still->max_principal) < 1e-6);  // Pa: a falling body is unstressed
+  CHECK(still->fragments >= 3);                   // the count is honoured anyway
+
+  auto hit = FemLiteFracturer(settings).analyse(make_beam(), downward_hit(Vec3(2, 0.25, 0.5), 3));
+  REQUIRE(hit.ok());
+  CHECK(hit->inertia_relief);
+  CHECK(hit->solve.residual < 1e-8);
+  CHECK(hit->max_principal > 1e3);
+  // A free beam hit at mid-span bends like a beam loaded at the centre and held by its own inertia.
+  CHECK(std::abs(hit->planes.front().point.x() - 2.0) < 0.5);
+}
+
+TEST_CASE("fem-lite: primitives and a real mesh fracture closed, conserving volume", "[fem-lite]") {
+  std::vector<Mesh> solids = {make_beam(), make_sphere(1.0, 32, 16)};
+  if (auto elephant = test::load_fixture_mesh("elephant.off")) solids.push_back(std::move(*elephant));
+  for (const Mesh& solid : solids) {
+    const Aabb box = bounding_box(solid);
+    const Vec3 top((box.min.x() + box.max.x()) / 2, (box.min.y() + box.max.y()) / 2, box.max.z());
+    for (int n : {5, 25}) {
+      const FractureParams params = downward_hit(top, n, 0.1 * box.diagonal());
+      auto fragments = FemLiteFracturer().fracture(solid, params);
+      REQUIRE(fragments.ok());
+      require_valid_fracture(solid, *fragments, n);
+    }
+  }
+}
+
+TEST_CASE("fem-lite: the same input gives the same planes and fragments; the planes replay", "[fem-lite]") {
+  const Mesh sphere = make_sphere(1.0, 24, 12);
+  const FractureParams params = downward_hit(Vec3(0, 0, 1), 12, 0.3);
+  const FemLiteFracturer fem;
+  auto a = fem.crack_planes(sphere, params);
+  auto b = fem.crack_planes(sphere, params);
+  REQUIRE((a.ok() && b.ok()));
+  REQUIRE(a->size() == b->size());
+  for (std::size_t i = 0; i < a->size(); ++i) {
+    CHECK((*a)[i].point == (*b)[i].point);
+    CHECK((*a)[i].normal == (*b)[i].normal);
+  }
+  auto fragments = fem.fracture(sphere, params);
+  auto replayed = PlaneSliceFracturer().fracture_by_planes(sphere, *a);
+  REQUIRE((fragments.ok() && replayed.ok()));
+  REQUIRE(fragments->size() == replayed->size());
+  CHECK(static_cast<int>(fragments->size()) >= params.fragments);
+  for (std::size_t i = 0; i < fragments->size(); ++i)
+    CHECK((*fragments)[i].mesh.vertices == (*replayed)[i].mesh.vertices);
+}
+
+TEST_CASE("fem-lite: bad settings and parameters are errors, not crashes", "[fem-lite]") {
+  const Mesh beam = make_beam();
+  const FractureParams params = downward_hit(Vec3(2, 0.25, 0.5), 4);
+  const auto fails = [&](FemLiteSettings settings) {
+    auto result = FemLiteFracturer(std::move(settings)).fracture(beam, params);
+    return !result.ok() && result.error().message.find("fem-lite") != std::string::npos;
+  };
+  FemLiteSettings s;
+  s.resolution = 1;
+  CHECK(fails(s));
+  s = {};
+  s.resolution = kFemLiteMaxResolution + 1;
+  CHECK(fails(s));
+  s = {};
+  s.material.poisson_ratio = 0.5;
+  CHECK(fails(s));
+  s = {};
+  s.material.young_modulus = -1;
+  CHECK(fails(s));
+  s = {};
+  s.gravity = Vec3(0, 0, std::numeric_limits<double>::quiet_NaN());
+  CHECK(fails(s));
+  s = {};
+  s.contact_time = 0;
+  CHECK(fails(s));
+  s = {};
+  s.crack_spacing = -1;
+  CHECK(fails(s));
+  s = {};
+  s.supports = {region(Vec3(10, 10, 10), Vec3(11, 11, 11))};  // holds no node
+  CHECK(fails(s));
+  s = {};
+  s.supports = {region(Vec3(-1, -1, -1), Vec3(0.01, 0.01, 0.01))};  // one node: free to rotate
+  CHECK(fails(s));
+  FractureParams bad = params;
+  bad.fragments = 0;
+  CHECK_FALSE(FemLiteFracturer().fracture(beam, bad).ok());
+}
+
+TEST_CASE("fem-lite vs cgal-clip: its crack planes replayed exactly give the same fragments", "[fem-lite][cgal-clip]") {
+  FractureParams params = downward_hit(Vec3(2, 0.25, 0.5), 8);
+  const FemLiteFracturer fem(simply_supported(16));
+  auto planes = fem.crack_planes(make_beam(), params);
+  REQUIRE(planes.ok());
+  auto fast = fem.fracture(make_beam(), params);
+  auto exact = CgalClipFracturer().fracture_by_planes(make_beam(), *planes);
+  REQUIRE((fast.ok() && exact.ok()));
+  REQUIRE(fast->size() == exact->size());
+  for (std::size_t i = 0; i < fast->size(); ++i) {
+    const double v = (*exact)[i].mass.volume;
+    CHECK(std::abs((*fast)[i].mass.volume - v) <= 1e-9 * v);
+  }
+}
