@@ -20,21 +20,6 @@
 namespace shatter {
 namespace {
 
-/// Unit cube [0,1]^3, outward, built by hand: 8 corners, two triangles per face.
-Mesh unit_cube() {
-  Mesh m;
-  for (int i = 0; i < 8; ++i) m.add_vertex(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-  const std::array<std::array<int, 4>, 6> quads{{
-      {0, 2, 3, 1}, {4, 5, 7, 6},  // z = 0, z = 1
-      {0, 1, 5, 4}, {2, 6, 7, 3},  // y = 0, y = 1
-      {0, 4, 6, 2}, {1, 3, 7, 5},  // x = 0, x = 1
-  }};
-  for (const auto& q : quads) {
-    m.add_triangle(q[0], q[1], q[2], FaceTag::surface);
-    m.add_triangle(q[0], q[2], q[3], FaceTag::surface);
-  }
-  return m;
-}
 
 /// The half-space {x : dot(normal, x - point) <= 0}.
 Plane below(Vec3 point, Vec3 normal) { return Plane{point, normal}; }
@@ -72,7 +57,7 @@ bool in_part_order(const std::vector<Fragment>& f) {
 }  // namespace
 
 TEST_CASE("cgal-cells: unit cube in the half-space x <= 0.3", "[cgal-cells]") {
-  const std::vector<Fragment> f = fracture(unit_cube(), {ConvexCell{{below(Vec3(0.3, 0, 0), Vec3(1, 0, 0))}}});
+  const std::vector<Fragment> f = fracture(test::make_unit_cube(), {ConvexCell{{below(Vec3(0.3, 0, 0), Vec3(1, 0, 0))}}});
   REQUIRE(f.size() == 1);
   CHECK(signed_volume(f[0].mesh) == Approx(0.3).epsilon(1e-14));
   CHECK(tagged_area(f[0].mesh, FaceTag::cut) == Approx(1.0).epsilon(1e-14));
@@ -86,7 +71,7 @@ TEST_CASE("cgal-cells: unit cube in the half-space x <= 0.3", "[cgal-cells]") {
 TEST_CASE("cgal-cells: unit cube in the octant below (0.5, 0.5, 0.5)", "[cgal-cells]") {
   const Vec3 c(0.5, 0.5, 0.5);
   const std::vector<Fragment> f = fracture(
-      unit_cube(), {ConvexCell{{below(c, Vec3(1, 0, 0)), below(c, Vec3(0, 1, 0)), below(c, Vec3(0, 0, 1))}}});
+      test::make_unit_cube(), {ConvexCell{{below(c, Vec3(1, 0, 0)), below(c, Vec3(0, 1, 0)), below(c, Vec3(0, 0, 1))}}});
   REQUIRE(f.size() == 1);
   CHECK(signed_volume(f[0].mesh) == Approx(0.125).epsilon(1e-14));
   CHECK(tagged_area(f[0].mesh, FaceTag::cut) == Approx(3 * 0.25).epsilon(1e-14));
@@ -95,7 +80,7 @@ TEST_CASE("cgal-cells: unit cube in the octant below (0.5, 0.5, 0.5)", "[cgal-ce
 }
 
 TEST_CASE("cgal-cells: two complementary cells split the cube exactly", "[cgal-cells]") {
-  const std::vector<Fragment> f = fracture(unit_cube(), {ConvexCell{{below(Vec3(0.3, 0, 0), Vec3(1, 0, 0))}},
+  const std::vector<Fragment> f = fracture(test::make_unit_cube(), {ConvexCell{{below(Vec3(0.3, 0, 0), Vec3(1, 0, 0))}},
                                                          ConvexCell{{below(Vec3(0.3, 0, 0), Vec3(-1, 0, 0))}}});
   REQUIRE(f.size() == 2);
   CHECK(f[0].mass.volume == Approx(0.3).epsilon(1e-14));
@@ -125,7 +110,7 @@ TEST_CASE("cgal-cells: a cell across the arms of a U gives two parts in part ord
 
 TEST_CASE("cgal-cells: the eight octants of a box partition it", "[cgal-cells]") {
   // A box [0,2]x[0,1]x[0,3] from the unit cube, split at its centre.
-  Mesh box = unit_cube();
+  Mesh box = test::make_unit_cube();
   for (Vec3& p : box.vertices) p = p.cwiseProduct(Vec3(2, 1, 3));
   const Vec3 centre(1, 0.5, 1.5);
   std::vector<ConvexCell> cells;
@@ -156,7 +141,7 @@ TEST_CASE("cgal-cells: the eight octants of a box partition it", "[cgal-cells]")
 }
 
 TEST_CASE("cgal-cells: cells that miss the solid give nothing", "[cgal-cells]") {
-  const Mesh cube = unit_cube();
+  const Mesh cube = test::make_unit_cube();
   // Far away; touching the face x = 1 from outside; empty (x <= 0.2 and x >= 0.4).
   const std::vector<ConvexCell> misses{
       ConvexCell{{below(Vec3(-5, 0, 0), Vec3(1, 0, 0))}},
@@ -175,7 +160,7 @@ TEST_CASE("cgal-cells: cells that miss the solid give nothing", "[cgal-cells]") 
 }
 
 TEST_CASE("cgal-cells: a solid's cut faces stay cut", "[cgal-cells]") {
-  Mesh cube = unit_cube();
+  Mesh cube = test::make_unit_cube();
   for (FaceTag& tag : cube.tags) tag = FaceTag::cut;
   const std::vector<Fragment> f = fracture(cube, {ConvexCell{{below(Vec3(0.3, 0, 0), Vec3(1, 0, 0))}}});
   REQUIRE(f.size() == 1);
@@ -209,9 +194,9 @@ TEST_CASE("cgal-cells: bad planes are errors", "[cgal-cells]") {
   const CgalClipFracturer fracturer;
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<ConvexCell> not_finite{ConvexCell{{below(Vec3(nan, 0, 0), Vec3(1, 0, 0))}}};
-  CHECK_FALSE(fracturer.fracture_by_cells(unit_cube(), not_finite).ok());
+  CHECK_FALSE(fracturer.fracture_by_cells(test::make_unit_cube(), not_finite).ok());
   const std::vector<ConvexCell> zero_normal{ConvexCell{}, ConvexCell{{below(Vec3(0.5, 0.5, 0.5), Vec3::Zero())}}};
-  const Result<std::vector<Fragment>> result = fracturer.fracture_by_cells(unit_cube(), zero_normal);
+  const Result<std::vector<Fragment>> result = fracturer.fracture_by_cells(test::make_unit_cube(), zero_normal);
   REQUIRE_FALSE(result.ok());
   CHECK(result.error().message.find("cell 1") != std::string::npos);
   CHECK_FALSE(fracturer.fracture_by_cells(Mesh{}, {}).ok());

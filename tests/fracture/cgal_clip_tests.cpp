@@ -2,6 +2,8 @@
 
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 
+#include "tests/support/shapes.h"
+
 #include <catch2/catch.hpp>
 #include <Eigen/Geometry>
 
@@ -15,22 +17,6 @@
 namespace shatter {
 namespace {
 
-/// Unit cube [0,1]^3, outward, 12 triangles.
-Mesh unit_cube() {
-  Mesh m;
-  for (int i = 0; i < 8; ++i) m.add_vertex(Vec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-  // Each face as a quad (a, b, c, d), counter-clockwise seen from outside.
-  const std::array<std::array<int, 4>, 6> quads{{
-      {0, 2, 3, 1}, {4, 5, 7, 6},  // z = 0, z = 1
-      {0, 1, 5, 4}, {2, 6, 7, 3},  // y = 0, y = 1
-      {0, 4, 6, 2}, {1, 3, 7, 5},  // x = 0, x = 1
-  }};
-  for (const auto& q : quads) {
-    m.add_triangle(q[0], q[1], q[2], FaceTag::surface);
-    m.add_triangle(q[0], q[2], q[3], FaceTag::surface);
-  }
-  return m;
-}
 
 /// A U-shaped prism, z in [0, 1]: the polygon (0,0) (3,0) (3,2) (2,2) (2,1) (1,1) (1,2) (0,2), area 5.
 /// Two legs x in [0,1] and [2,3] for y in [1,2] over a base y in [0,1].
@@ -104,7 +90,7 @@ std::vector<Fragment> cut(const Mesh& solid, std::vector<Plane> planes) {
 }  // namespace
 
 TEST_CASE("cgal-clip: unit cube cut at x = 0.3", "[cgal-clip]") {
-  const std::vector<Fragment> f = cut(unit_cube(), {Plane{Vec3(0.3, 0.5, 0.5), Vec3(1, 0, 0)}});
+  const std::vector<Fragment> f = cut(test::make_unit_cube(), {Plane{Vec3(0.3, 0.5, 0.5), Vec3(1, 0, 0)}});
   REQUIRE(f.size() == 2);
   // Below (x < 0.3) first.
   CHECK(volume(f[0].mesh) == Approx(0.3).epsilon(1e-14));
@@ -126,7 +112,7 @@ TEST_CASE("cgal-clip: unit cube cut at x = 0.3", "[cgal-clip]") {
 
 TEST_CASE("cgal-clip: unit cube cut through three corners", "[cgal-clip]") {
   // x + y + z = 1 through (1,0,0), (0,1,0), (0,0,1): a corner tetrahedron of volume 1/6.
-  const std::vector<Fragment> f = cut(unit_cube(), {Plane{Vec3(1, 0, 0), Vec3(1, 1, 1)}});
+  const std::vector<Fragment> f = cut(test::make_unit_cube(), {Plane{Vec3(1, 0, 0), Vec3(1, 1, 1)}});
   REQUIRE(f.size() == 2);
   CHECK(volume(f[0].mesh) == Approx(1.0 / 6.0).epsilon(1e-14));
   CHECK(volume(f[1].mesh) == Approx(5.0 / 6.0).epsilon(1e-14));
@@ -138,7 +124,7 @@ TEST_CASE("cgal-clip: unit cube cut through three corners", "[cgal-clip]") {
 
 TEST_CASE("cgal-clip: unit cube cut through two opposite edges", "[cgal-clip]") {
   // x = y contains the edges x = y = 0 and x = y = 1: two prisms of volume 1/2, caps sqrt(2) x 1.
-  const std::vector<Fragment> f = cut(unit_cube(), {Plane{Vec3(0.5, 0.5, 0.5), Vec3(1, -1, 0)}});
+  const std::vector<Fragment> f = cut(test::make_unit_cube(), {Plane{Vec3(0.5, 0.5, 0.5), Vec3(1, -1, 0)}});
   REQUIRE(f.size() == 2);
   for (const Fragment& fragment : f) {
     CHECK(volume(fragment.mesh) == Approx(0.5).epsilon(1e-14));
@@ -153,7 +139,7 @@ TEST_CASE("cgal-clip: unit cube cut through two opposite edges", "[cgal-clip]") 
 TEST_CASE("cgal-clip: a plane containing a face leaves the cube whole", "[cgal-clip]") {
   const Vec3 normal = GENERATE(Vec3(1, 0, 0), Vec3(-1, 0, 0));
   const Vec3 point = GENERATE(Vec3(0, 0.2, 0.7), Vec3(1, 0.5, 0.5));
-  const std::vector<Fragment> f = cut(unit_cube(), {Plane{point, normal}});
+  const std::vector<Fragment> f = cut(test::make_unit_cube(), {Plane{point, normal}});
   REQUIRE(f.size() == 1);
   CHECK(volume(f[0].mesh) == Approx(1.0).epsilon(1e-15));
   CHECK(area(f[0].mesh, FaceTag::surface) == Approx(6.0).epsilon(1e-15));
@@ -198,7 +184,7 @@ TEST_CASE("cgal-clip: a cut along a face of a non-convex solid keeps that face a
 TEST_CASE("cgal-clip: random fracture partitions the volume and the surface", "[cgal-clip]") {
   const int fragments = GENERATE(5, 25);
   const std::uint64_t seed = GENERATE(1u, 7u);
-  const Mesh solid = GENERATE(unit_cube(), u_prism());
+  const Mesh solid = GENERATE(test::make_unit_cube(), u_prism());
   const CgalClipFracturer fracturer;
   Result<std::vector<Fragment>> result = fracturer.fracture(solid, FractureParams{fragments, seed, {}});
   REQUIRE(result.ok());
@@ -237,19 +223,19 @@ TEST_CASE("cgal-clip: same seed, same fragments", "[cgal-clip]") {
 
 TEST_CASE("cgal-clip: bad parameters are errors", "[cgal-clip]") {
   const CgalClipFracturer fracturer;
-  CHECK_FALSE(fracturer.fracture(unit_cube(), FractureParams{0, 1, {}}).ok());
+  CHECK_FALSE(fracturer.fracture(test::make_unit_cube(), FractureParams{0, 1, {}}).ok());
   CHECK_FALSE(fracturer.fracture(Mesh{}, FractureParams{4, 1, {}}).ok());
   const double nan = std::numeric_limits<double>::quiet_NaN();
   const std::vector<Plane> not_finite{Plane{Vec3(nan, 0, 0), Vec3(1, 0, 0)}};
-  CHECK_FALSE(fracturer.fracture_by_planes(unit_cube(), not_finite).ok());
+  CHECK_FALSE(fracturer.fracture_by_planes(test::make_unit_cube(), not_finite).ok());
   const std::vector<Plane> zero_normal{Plane{Vec3(0.5, 0.5, 0.5), Vec3::Zero()}};
-  CHECK_FALSE(fracturer.fracture_by_planes(unit_cube(), zero_normal).ok());
+  CHECK_FALSE(fracturer.fracture_by_planes(test::make_unit_cube(), zero_normal).ok());
 }
 
 TEST_CASE("cgal-clip: a self-intersecting input is an error", "[cgal-clip]") {
   // Two overlapping cubes in one mesh: closed and oriented, but the surfaces cross.
-  Mesh solid = unit_cube();
-  const Mesh other = unit_cube();
+  Mesh solid = test::make_unit_cube();
+  const Mesh other = test::make_unit_cube();
   const auto offset = static_cast<std::int32_t>(solid.vertices.size());
   for (const Vec3& p : other.vertices) solid.add_vertex(p + Vec3(0.5, 0.25, 0.125));
   for (const Triangle& t : other.triangles) solid.add_triangle(t[0] + offset, t[1] + offset, t[2] + offset, FaceTag::surface);
