@@ -1,0 +1,277 @@
+#include "harness/pipeline/physics/physics_world.h"
+
+#include <btBulletDynamicsCommon.h>
+#include <BulletCollision/CollisionShapes/btShapeHull.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace shatter {
+namespace {
+
+/// Always-on precondition check (not compiled out in release builds): a broken caller aborts loudly.
+void require(bool ok, const char* what) {
+  if (!ok) {
+    std::fprintf(stderr, "shatter::PhysicsWorld: precondition failed: %s\n", what);
+    std::abort();
+  }
+}
+
+btVector3 to_bt(const Vec3& v) {
+  return {static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z())};
+}
+
+Vec3 from_bt(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
+
+btMatrix3x3 to_bt_matrix(const Eigen::Matrix3d& m) {
+  return {static_cast<btScalar>(m(0, 0)), static_cast<btScalar>(m(0, 1)), static_cast<btScalar>(m(0, 2)),
+          static_cast<btScalar>(m(1, 0)), static_cast<btScalar>(m(1, 1)), static_cast<btScalar>(m(1, 2)),
+          static_cast<btScalar>(m(2, 0)), static_cast<btScalar>(m(2, 1)), static_cast<btScalar>(m(2, 2))};
+}
+
+Eigen::Matrix3d from_bt(const btMatrix3x3& m) {
+  Eigen::Matrix3d r;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r(i, j) = m[i][j];
+  return r;
+}
+
+/// Mass properties of one rigid body, per unit density (m^3, m, m^5).
+struct BodyMass {
+  double volume = 0.0;
+  Vec3 centroid = Vec3::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< about `centroid`
+};
+
+void require_valid(const Fragment& f) {
+  require(f.mesh.vertices.size() >= 4, "fragment has fewer than 4 vertices");
+  require(std::isfinite(f.mass.volume) && f.mass.volume > 0.0, "fragment volume must be finite and > 0");
+  require(f.mass.centroid.allFinite() && f.mass.inertia.allFinite(), "fragment mass properties not finite");
+  for (const Vec3& p : f.mesh.vertices) require(p.allFinite(), "fragment vertex not finite");
+}
+
+/// Combined mass properties of `fragments` (parallel-axis theorem about the common centroid).
+BodyMass combine(std::span<const Fragment> fragments) {
+  BodyMass total;
+  for (const Fragment& f : fragments) {
+    total.volume += f.mass.volume;
+    total.centroid += f.mass.volume * f.mass.centroid;
+  }
+  total.centroid /= total.volume;
+  for (const Fragment& f : fragments) {
+    const Vec3 d = f.mass.centroid - total.centroid;
+    total.inertia += f.mass.inertia +
+                     f.mass.volume * (d.squaredNorm() * Eigen::Matrix3d::Identity() - d * d.transpose());
+  }
+  return total;
+}
+
+}  // namespace
+
+Status validate_physics_settings(const PhysicsSettings& s) {
+  if (!s.gravity.allFinite()) return Error{"physics.gravity: must be finite"};
+  if (!std::isfinite(s.fixed_step) || s.fixed_step <= 0.0)
+    return Error{"physics.fixed_step: must be finite and > 0 s, got " + std::to_string(s.fixed_step)};
+  if (!std::isfinite(s.ground_z)) return Error{"physics.ground_z: must be finite"};
+  if (s.max_hull_vertices < 0) return Error{"physics.max_hull_vertices: must be >= 0 (0 = no cap)"};
+  if (!std::isfinite(s.collision_margin) || s.collision_margin < 0.0)
+    return Error{"physics.collision_margin: must be finite and >= 0 m"};
+  if (!std::isfinite(s.friction) || s.friction < 0.0) return Error{"physics.friction: must be >= 0"};
+  if (!std::isfinite(s.restitution) || s.restitution < 0.0 || s.restitution > 1.0)
+    return Error{"physics.restitution: must be in [0, 1]"};
+  return {};
+}
+
+/// One body: Bullet objects plus the rotation of its principal frame in mesh coordinates.
+struct Body {
+  std::vector<std::unique_ptr<btCollisionShape>> children;  ///< hulls of a compound, else empty
+  std::unique_ptr<btCollisionShape> shape;                   ///< the body's collision shape
+  std::unique_ptr<btRigidBody> rigid;
+  Eigen::Matrix3d principal = Eigen::Matrix3d::Identity();   ///< principal axes (columns), mesh frame
+};
+
+struct PhysicsWorld::Impl {
+  PhysicsSettings settings;
+  // Declaration order = construction order; members are destroyed in reverse (world first).
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase broadphase;
+  btSequentialImpulseConstraintSolver solver;
+  btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
+  std::unique_ptr<btCollisionShape> ground_shape;
+  std::unique_ptr<btRigidBody> ground;
+  std::vector<std::unique_ptr<Body>> bodies;  ///< by id; null once removed
+  int live = 0;
+  long steps = 0;
+
+  explicit Impl(const PhysicsSettings& s) : settings(s) {
+    world.setGravity(to_bt(s.gravity));
+    if (s.ground) {
+      ground_shape = std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), static_cast<btScalar>(s.ground_z));
+      btRigidBody::btRigidBodyConstructionInfo info(0, nullptr, ground_shape.get());
+      info.m_friction = static_cast<btScalar>(s.friction);
+      info.m_restitution = static_cast<btScalar>(s.restitution);
+      ground = std::make_unique<btRigidBody>(info);
+      world.addRigidBody(ground.get());
+    }
+  }
+
+  ~Impl() {
+    for (auto& b : bodies)
+      if (b) world.removeRigidBody(b->rigid.get());
+    if (ground) world.removeRigidBody(ground.get());
+  }
+
+  const Body& body(int id) const {
+    require(id >= 0 && id < static_cast<int>(bodies.size()) && bodies[id], "unknown or removed body id");
+    return *bodies[id];
+  }
+
+  /// A convex hull of `points` (mesh frame), expressed in the principal frame (`centroid`, `axes`).
+  std::unique_ptr<btCollisionShape> make_hull(const std::vector<Vec3>& points, const Vec3& centroid,
+                                              const Eigen::Matrix3d& axes) const {
+    auto hull = std::make_unique<btConvexHullShape>();
+    for (const Vec3& p : points) hull->addPoint(to_bt(axes.transpose() * (p - centroid)), false);
+    hull->recalcLocalAabb();
+    hull->optimizeConvexHull();  // keep only the hull's own vertices
+    const int cap = settings.max_hull_vertices;
+    if (cap > 0 && hull->getNumPoints() > cap) {
+      btShapeHull reduced(hull.get());
+      reduced.buildHull(hull->getMargin());
+      hull = std::make_unique<btConvexHullShape>(reinterpret_cast<const btScalar*>(reduced.getVertexPointer()),
+                                                 reduced.numVertices());
+    }
+    hull->setMargin(static_cast<btScalar>(settings.collision_margin));
+    return hull;
+  }
+
+  /// Adds a body made of `fragments` with their combined mass properties at `density`.
+  int add(std::span<const Fragment> fragments, double density, bool is_static) {
+    require(!fragments.empty(), "a body needs at least one fragment");
+    require(std::isfinite(density) && density > 0.0, "density must be finite and > 0 kg/m^3");
+    for (const Fragment& f : fragments) require_valid(f);
+    const BodyMass m = combine(fragments);
+
+    auto b = std::make_unique<Body>();
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(density * m.inertia);
+    b->principal = eig.eigenvectors();
+    if (b->principal.determinant() < 0.0) b->principal.col(2) *= -1.0;  // a proper rotation
+    const Vec3 moments = eig.eigenvalues();  // ascending, kg m^2
+
+    if (fragments.size() == 1) {
+      b->shape = make_hull(fragments[0].mesh.vertices, m.centroid, b->principal);
+    } else {
+      auto compound = std::make_unique<btCompoundShape>();
+      btTransform identity;
+      identity.setIdentity();
+      for (const Fragment& f : fragments) {
+        b->children.push_back(make_hull(f.mesh.vertices, m.centroid, b->principal));
+        compound->addChildShape(identity, b->children.back().get());
+      }
+      b->shape = std::move(compound);
+    }
+
+    const double mass = is_static ? 0.0 : density * m.volume;
+    const btVector3 inertia = is_static ? btVector3(0, 0, 0) : to_bt(moments);
+    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), nullptr, b->shape.get(), inertia);
+    info.m_startWorldTransform = btTransform(to_bt_matrix(b->principal), to_bt(m.centroid));
+    info.m_friction = static_cast<btScalar>(settings.friction);
+    info.m_restitution = static_cast<btScalar>(settings.restitution);
+    b->rigid = std::make_unique<btRigidBody>(info);
+    if (!settings.allow_sleeping) b->rigid->setActivationState(DISABLE_DEACTIVATION);
+    world.addRigidBody(b->rigid.get());
+
+    bodies.push_back(std::move(b));
+    ++live;
+    return static_cast<int>(bodies.size()) - 1;
+  }
+};
+
+Result<PhysicsWorld> PhysicsWorld::create(const PhysicsSettings& settings) {
+  if (Status s = validate_physics_settings(settings); !s.ok()) return s.error();
+  return PhysicsWorld(settings);
+}
+
+PhysicsWorld::PhysicsWorld(const PhysicsSettings& settings) {
+  const Status s = validate_physics_settings(settings);
+  require(s.ok(), "invalid PhysicsSettings (use PhysicsWorld::create for an error value)");
+  impl_ = std::make_unique<Impl>(settings);
+}
+
+PhysicsWorld::~PhysicsWorld() = default;
+PhysicsWorld::PhysicsWorld(PhysicsWorld&&) noexcept = default;
+PhysicsWorld& PhysicsWorld::operator=(PhysicsWorld&&) noexcept = default;
+
+int PhysicsWorld::add_fragment(const Fragment& fragment, double density, bool is_static) {
+  return impl_->add(std::span<const Fragment>(&fragment, 1), density, is_static);
+}
+
+int PhysicsWorld::add_cluster(std::span<const Fragment> fragments, double density, bool is_static) {
+  return impl_->add(fragments, density, is_static);
+}
+
+void PhysicsWorld::remove(int body) {
+  impl_->body(body);  // checks the id
+  impl_->world.removeRigidBody(impl_->bodies[body]->rigid.get());
+  impl_->bodies[body].reset();
+  --impl_->live;
+}
+
+void PhysicsWorld::apply_impulse(int body, const Vec3& impulse_Ns, const Vec3& world_point) {
+  require(impulse_Ns.allFinite() && world_point.allFinite(), "impulse and point must be finite");
+  btRigidBody& rigid = *impl_->body(body).rigid;
+  if (rigid.isStaticObject()) return;  // infinite mass: no effect
+  rigid.activate(true);
+  rigid.applyImpulse(to_bt(impulse_Ns), to_bt(world_point - position(body)));
+}
+
+void PhysicsWorld::step() {
+  const auto dt = static_cast<btScalar>(impl_->settings.fixed_step);
+  impl_->world.stepSimulation(dt, 0);  // maxSubSteps = 0: exactly one step of dt, no interpolation
+  ++impl_->steps;
+}
+
+Vec3 PhysicsWorld::position(int body) const {
+  return from_bt(impl_->body(body).rigid->getCenterOfMassPosition());
+}
+
+Eigen::Matrix3d PhysicsWorld::rotation(int body) const {
+  const Body& b = impl_->body(body);
+  return from_bt(b.rigid->getCenterOfMassTransform().getBasis()) * b.principal.transpose();
+}
+
+Vec3 PhysicsWorld::linear_velocity(int body) const {
+  return from_bt(impl_->body(body).rigid->getLinearVelocity());
+}
+
+Vec3 PhysicsWorld::angular_velocity(int body) const {
+  return from_bt(impl_->body(body).rigid->getAngularVelocity());
+}
+
+double PhysicsWorld::mass(int body) const {
+  const btScalar inv = impl_->body(body).rigid->getInvMass();
+  return inv == 0 ? 0.0 : 1.0 / static_cast<double>(inv);
+}
+
+Vec3 PhysicsWorld::principal_inertia(int body) const {
+  const Vec3 inv = from_bt(impl_->body(body).rigid->getInvInertiaDiagLocal());
+  return inv.unaryExpr([](double x) { return x == 0.0 ? 0.0 : 1.0 / x; });
+}
+
+bool PhysicsWorld::contains(int body) const {
+  return body >= 0 && body < static_cast<int>(impl_->bodies.size()) && impl_->bodies[body] != nullptr;
+}
+
+int PhysicsWorld::body_count() const { return impl_->live; }
+
+long PhysicsWorld::step_count() const { return impl_->steps; }
+
+const PhysicsSettings& PhysicsWorld::settings() const { return impl_->settings; }
+
+}  // namespace shatter

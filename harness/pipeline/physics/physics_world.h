@@ -1,0 +1,104 @@
+#pragma once
+/// A thin rigid-body world over Bullet for the frame pipeline (DESIGN.md section 3: colliders and
+/// physics steps).
+///
+/// Design note. Each body is one fragment (or one cluster of fragments) as a convex hull of its mesh
+/// vertices, with the *exact* mass properties of the closed mesh: mass = density * volume, and the
+/// inertia tensor about the centroid diagonalised into principal moments. Bullet wants a diagonal
+/// local inertia, so the body's local frame is the principal frame: origin at the centroid, axes the
+/// eigenvectors of the inertia tensor; the hull vertices are expressed in that frame. Callers never
+/// see the principal frame: `position` is the world centroid and `rotation` maps the fragment's
+/// original mesh coordinates to the world, `x_world = rotation * (x_mesh - centroid_0) + position`, so
+/// a body added and never moved has the identity rotation.
+///
+/// Bullet (Debian's 3.24) is single precision; everything here is double and converted at the
+/// boundary. Bullet headers stay in physics_world.cpp (pimpl), so including this header is cheap.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+#include "algorithms/fracture/fracturer.h"
+
+#include <Eigen/Core>
+
+#include <memory>
+#include <span>
+
+namespace shatter {
+
+/// Settings of a PhysicsWorld; plain data with documented defaults.
+struct PhysicsSettings {
+  Vec3 gravity = Vec3(0.0, 0.0, -9.81);  ///< m/s^2, world
+  double fixed_step = 1.0 / 60.0;        ///< s, the length of one step() (> 0)
+  bool ground = false;                   ///< a static ground plane z = ground_z, normal +z, when true
+  double ground_z = 0.0;                 ///< m, height of the ground plane
+  /// Hull reduction threshold: a fragment whose convex hull has more vertices than this gets a reduced
+  /// hull (Bullet's btShapeHull: the hull's support points in 42 fixed directions, so about 42
+  /// vertices; a trigger, not an exact cap); 0 = never reduce. Mass properties always come from the
+  /// full mesh, only the collider is reduced.
+  int max_hull_vertices = 0;
+  /// m, Bullet's collision margin around each hull (Bullet's default is 0.04; contacts happen this
+  /// far outside the hull). >= 0.
+  double collision_margin = 0.01;
+  double friction = 0.5;                 ///< Coulomb friction coefficient of every body and the ground
+  double restitution = 0.0;              ///< coefficient of restitution of every body and the ground
+  bool allow_sleeping = true;            ///< let Bullet deactivate bodies at rest (faster, still exact)
+};
+
+/// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, collision_margin >= 0,
+/// friction >= 0, restitution in [0, 1]. The error names the field ("physics.fixed_step: ...").
+Status validate_physics_settings(const PhysicsSettings& s);
+
+/// A Bullet dynamics world with fragment bodies addressed by integer ids (never reused).
+class PhysicsWorld {
+ public:
+  /// A world from checked settings; an error when validate_physics_settings fails.
+  static Result<PhysicsWorld> create(const PhysicsSettings& settings);
+  /// A world from settings that must be valid (programmer error otherwise: aborts).
+  explicit PhysicsWorld(const PhysicsSettings& settings = {});
+  ~PhysicsWorld();
+  PhysicsWorld(PhysicsWorld&&) noexcept;
+  PhysicsWorld& operator=(PhysicsWorld&&) noexcept;
+  PhysicsWorld(const PhysicsWorld&) = delete;
+  PhysicsWorld& operator=(const PhysicsWorld&) = delete;
+
+  /// Adds `fragment` (closed, volume > 0, finite) at rest where its mesh is, of `density` (kg/m^3,
+  /// > 0); a static body never moves and has infinite mass. Returns the body id (>= 0).
+  int add_fragment(const Fragment& fragment, double density, bool is_static = false);
+  /// Adds `fragments` as one rigid body (a compound of their hulls) with the combined exact mass
+  /// properties (parallel-axis theorem about the common centroid). Non-empty. Returns the body id.
+  int add_cluster(std::span<const Fragment> fragments, double density, bool is_static = false);
+  /// Removes body `body`; its id becomes invalid and is never reused.
+  void remove(int body);
+
+  /// Applies `impulse_Ns` (N s, world) at `world_point` (m, world) to a dynamic body, waking it.
+  void apply_impulse(int body, const Vec3& impulse_Ns, const Vec3& world_point);
+  /// Advances the world by one fixed step (settings().fixed_step seconds, no sub-stepping).
+  void step();
+
+  /// World position of the body's centroid, m.
+  [[nodiscard]] Vec3 position(int body) const;
+  /// Rotation from the fragment's original mesh coordinates to the world (identity until it turns).
+  [[nodiscard]] Eigen::Matrix3d rotation(int body) const;
+  /// Velocity of the body's centroid, m/s, world.
+  [[nodiscard]] Vec3 linear_velocity(int body) const;
+  /// Angular velocity, rad/s, world.
+  [[nodiscard]] Vec3 angular_velocity(int body) const;
+  /// Mass as Bullet holds it, kg (0 for a static body).
+  [[nodiscard]] double mass(int body) const;
+  /// Principal moments of inertia as Bullet holds them, kg m^2, ascending (0 for a static body).
+  [[nodiscard]] Vec3 principal_inertia(int body) const;
+  /// True when `body` is a live id.
+  [[nodiscard]] bool contains(int body) const;
+  /// Number of live bodies (the ground plane is not counted).
+  [[nodiscard]] int body_count() const;
+  /// Number of step() calls so far.
+  [[nodiscard]] long step_count() const;
+  /// The settings the world was made with.
+  [[nodiscard]] const PhysicsSettings& settings() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace shatter

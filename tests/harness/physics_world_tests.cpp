@@ -1,0 +1,181 @@
+// PhysicsWorld: the Bullet wrapper hands Bullet the exact mass properties of the fragment meshes and
+// integrates them as documented (semi-implicit Euler, fixed 1/60 s steps).
+
+#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/primitives.h"
+#include "harness/pipeline/physics/physics_world.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using shatter::Fragment;
+using shatter::PhysicsSettings;
+using shatter::PhysicsWorld;
+using shatter::Vec3;
+
+Fragment box_fragment(const Vec3& size, const Vec3& center) {
+  Fragment f;
+  f.mesh = shatter::make_box(size, center);
+  f.mass = shatter::mass_properties(f.mesh);
+  return f;
+}
+
+PhysicsSettings no_gravity() {
+  PhysicsSettings s;
+  s.gravity = Vec3::Zero();
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("physics-world: free fall follows the discrete semi-implicit Euler formula", "[physics]") {
+  PhysicsWorld world;  // default gravity, no ground
+  const double z0 = 10.0;
+  const int id = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(0, 0, z0)), 1000.0, false);
+  const double g = 9.81;
+  const double dt = 1.0 / 60.0;
+  const int n = 30;
+  for (int i = 0; i < n; ++i) world.step();
+  // v_n = -g dt n, z_n = z0 - g dt^2 n(n+1)/2 (velocity first, then position).
+  const double drop = g * dt * dt * n * (n + 1) / 2.0;
+  const Vec3 p = world.position(id);
+  CHECK(std::abs((z0 - p.z()) - drop) <= 1e-4 * drop);
+  CHECK(std::abs(p.x()) < 1e-9);
+  CHECK(std::abs(p.y()) < 1e-9);
+  CHECK(world.linear_velocity(id).z() == Approx(-g * dt * n).epsilon(1e-5));
+  CHECK(world.step_count() == n);
+}
+
+TEST_CASE("physics-world: a box resting on the ground stays at rest", "[physics]") {
+  PhysicsSettings s;
+  s.ground = true;
+  s.ground_z = 0.0;
+  s.allow_sleeping = false;  // measure the solver, not the sleeping
+  PhysicsWorld world(s);
+  const int id = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(0, 0, 0.5 + s.collision_margin)),
+                                    1000.0, false);
+  for (int i = 0; i < 120; ++i) world.step();
+  CHECK(world.linear_velocity(id).norm() < 1e-2);
+  CHECK(world.angular_velocity(id).norm() < 1e-2);
+  CHECK(world.position(id).z() == Approx(0.5).margin(0.05));
+  CHECK((world.rotation(id) - Eigen::Matrix3d::Identity()).norm() < 1e-3);
+}
+
+TEST_CASE("physics-world: a sphere with a reduced hull lands and rests on the ground", "[physics]") {
+  PhysicsSettings s;
+  s.ground = true;
+  s.max_hull_vertices = 24;
+  PhysicsWorld world(s);
+  Fragment sphere;
+  sphere.mesh = shatter::make_sphere(0.5, 32, 16, Vec3(0, 0, 1.0));
+  sphere.mass = shatter::mass_properties(sphere.mesh);
+  const int id = world.add_fragment(sphere, 1000.0, false);
+  for (int i = 0; i < 240; ++i) world.step();
+  CHECK(world.linear_velocity(id).norm() < 5e-2);
+  CHECK(world.position(id).z() == Approx(0.5).margin(0.1));
+}
+
+TEST_CASE("physics-world: mass and principal inertia are exact for an asymmetric box", "[physics]") {
+  PhysicsWorld world(no_gravity());
+  const double density = 2500.0;
+  const Vec3 center(1.0, -2.0, 3.0);
+  const int id = world.add_fragment(box_fragment(Vec3(1, 2, 3), center), density, false);
+  const double m = density * 6.0;
+  CHECK(world.mass(id) == Approx(m).epsilon(1e-6));
+  // Ascending: about z (1^2 + 2^2), about y (1^2 + 3^2), about x (2^2 + 3^2), times m / 12.
+  const Vec3 moments = world.principal_inertia(id);
+  CHECK(moments.x() == Approx(m / 12.0 * 5.0).epsilon(1e-6));
+  CHECK(moments.y() == Approx(m / 12.0 * 10.0).epsilon(1e-6));
+  CHECK(moments.z() == Approx(m / 12.0 * 13.0).epsilon(1e-6));
+  // The principal frame stays internal: position is the centroid, rotation the identity.
+  CHECK((world.position(id) - center).norm() < 1e-6);
+  CHECK((world.rotation(id) - Eigen::Matrix3d::Identity()).norm() < 1e-6);
+}
+
+TEST_CASE("physics-world: an impulse gives velocity J/m and the matching spin", "[physics]") {
+  PhysicsWorld world(no_gravity());
+  const double density = 2.0;
+  const Vec3 center(0.0, 0.0, 5.0);
+  const int id = world.add_fragment(box_fragment(Vec3(1, 2, 3), center), density, false);
+  const double m = density * 6.0;
+
+  SECTION("at the centroid: pure translation") {
+    const Vec3 j(3.0, -1.5, 6.0);
+    world.apply_impulse(id, j, center);
+    world.step();
+    CHECK((world.linear_velocity(id) - j / m).norm() < 1e-5 * (j / m).norm());
+    CHECK(world.angular_velocity(id).norm() < 1e-9);
+    CHECK((world.position(id) - (center + j / m / 60.0)).norm() < 1e-5);
+  }
+  SECTION("off the centroid: spin about a principal axis, w = I^-1 (r x J)") {
+    const Vec3 j(0.0, 0.0, 2.0);
+    const Vec3 r(0.5, 0.0, 0.0);
+    world.apply_impulse(id, j, center + r);
+    world.step();
+    const double i_yy = m / 12.0 * (1.0 + 9.0);
+    CHECK((world.linear_velocity(id) - j / m).norm() < 1e-5);
+    CHECK(world.angular_velocity(id).y() == Approx(r.cross(j).y() / i_yy).epsilon(1e-4));
+    CHECK(std::abs(world.angular_velocity(id).x()) < 1e-6);
+    CHECK(std::abs(world.angular_velocity(id).z()) < 1e-6);
+  }
+}
+
+TEST_CASE("physics-world: static bodies do not move", "[physics]") {
+  PhysicsWorld world;
+  const Vec3 center(0.0, 0.0, 5.0);
+  const int id = world.add_fragment(box_fragment(Vec3(1, 1, 1), center), 1000.0, true);
+  world.apply_impulse(id, Vec3(100, 0, 0), center);
+  for (int i = 0; i < 60; ++i) world.step();
+  CHECK((world.position(id) - center).norm() < 1e-9);
+  CHECK(world.linear_velocity(id).norm() == 0.0);
+  CHECK(world.mass(id) == 0.0);
+}
+
+TEST_CASE("physics-world: removing a body reduces the count and retires the id", "[physics]") {
+  PhysicsWorld world;
+  const int a = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(0, 0, 0)), 1.0, false);
+  const int b = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(3, 0, 0)), 1.0, false);
+  CHECK(world.body_count() == 2);
+  world.remove(a);
+  CHECK(world.body_count() == 1);
+  CHECK_FALSE(world.contains(a));
+  CHECK(world.contains(b));
+  const int c = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(6, 0, 0)), 1.0, false);
+  CHECK(c != a);
+  world.step();
+  CHECK(world.body_count() == 2);
+}
+
+TEST_CASE("physics-world: a cluster of two cubes has the mass properties of a 2 x 1 x 1 box", "[physics]") {
+  PhysicsWorld world(no_gravity());
+  const std::vector<Fragment> cubes = {box_fragment(Vec3(1, 1, 1), Vec3(-0.5, 0, 2)),
+                                       box_fragment(Vec3(1, 1, 1), Vec3(0.5, 0, 2))};
+  const double density = 10.0;
+  const int id = world.add_cluster(cubes, density, false);
+  const double m = density * 2.0;
+  CHECK(world.mass(id) == Approx(m).epsilon(1e-6));
+  const Vec3 moments = world.principal_inertia(id);
+  CHECK(moments.x() == Approx(m / 12.0 * 2.0).epsilon(1e-6));
+  CHECK(moments.y() == Approx(m / 12.0 * 5.0).epsilon(1e-6));
+  CHECK(moments.z() == Approx(m / 12.0 * 5.0).epsilon(1e-6));
+  CHECK((world.position(id) - Vec3(0, 0, 2)).norm() < 1e-6);
+  world.apply_impulse(id, Vec3(0, m, 0), Vec3(0, 0, 2));
+  world.step();
+  CHECK((world.linear_velocity(id) - Vec3(0, 1, 0)).norm() < 1e-5);
+}
+
+TEST_CASE("physics-world: bad settings are an error naming the field", "[physics]") {
+  PhysicsSettings s;
+  s.fixed_step = 0.0;
+  const auto world = PhysicsWorld::create(s);
+  REQUIRE_FALSE(world.ok());
+  CHECK(world.error().message.find("physics.fixed_step") != std::string::npos);
+  s = PhysicsSettings{};
+  s.restitution = 2.0;
+  CHECK_FALSE(PhysicsWorld::create(s).ok());
+  CHECK(PhysicsWorld::create(PhysicsSettings{}).ok());
+}
