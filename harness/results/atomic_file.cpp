@@ -13,13 +13,13 @@
 namespace shatter {
 namespace fs = std::filesystem;
 
-namespace {
-
 fs::path temporary_beside(const fs::path& path) {
   std::random_device rd;
   const fs::path parent = path.has_parent_path() ? path.parent_path() : fs::path(".");
   return parent / fmt::format(".{}.partial-{:08x}", path.filename().string(), rd());
 }
+
+namespace {
 
 /// Writes all of `content` to `fd`, retrying short writes and interrupted calls; errno on failure.
 bool write_all(int fd, std::string_view content) {

@@ -1,10 +1,10 @@
 #include "harness/results/fragment_writer.h"
 
 #include "algorithms/core/mesh_io.h"
+#include "harness/results/atomic_file.h"
 
 #include <fmt/core.h>
 
-#include <random>
 #include <regex>
 #include <system_error>
 #include <vector>
@@ -13,12 +13,6 @@ namespace shatter {
 namespace fs = std::filesystem;
 
 namespace {
-
-fs::path fresh_temporary_beside(const fs::path& dir) {
-  std::random_device rd;
-  const fs::path parent = dir.has_parent_path() ? dir.parent_path() : fs::path(".");
-  return parent / fmt::format(".{}.partial-{:08x}", dir.filename().string(), rd());
-}
 
 bool is_fragment_file(const fs::path& p) {
   static const std::regex pattern(R"(fragment_\d{3,}\.obj)");
@@ -31,7 +25,7 @@ Status write_fragments(const fs::path& dir, std::span<const Fragment> fragments)
   std::error_code ec;
   if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
     return Error{dir.string() + ": exists and is not a folder"};
-  const fs::path temp = fresh_temporary_beside(dir);
+  const fs::path temp = temporary_beside(dir);
   if (!fs::create_directories(temp, ec)) return Error{temp.string() + ": cannot create folder: " + ec.message()};
   const auto give_up = [&](Error e) {
     fs::remove_all(temp, ec);
