@@ -29,7 +29,7 @@ struct FemLiteAnalysis {
 /// The fem-lite fracturer.
 class FemLiteFracturer final : public Fracturer {
  public:
-  /// A fracturer with the default settings (resolution 12, concrete, no gravity, no support).
+  /// A fracturer with the default settings (resolution 16, concrete, no gravity, no support).
   FemLiteFracturer() = default;
   /// A fracturer with the given settings (checked when fracturing).
   explicit FemLiteFracturer(FemLiteSettings settings) : settings_(std::move(settings)) {}

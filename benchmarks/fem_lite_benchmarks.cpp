@@ -1,0 +1,55 @@
+// Google Benchmark: fem-lite's resolution knob, time against crack-location error, on a simply
+// supported beam [0,4] x [0,0.5] x [0,0.5] m (pinned bottom edges at both ends) hit downward at
+// mid-span (1000 N s at (2, 0.25, 0.5), 2 fragments). Counters: the first crack's location error
+// |x - 2| / 4 and its normal's angle to the beam axis (degrees).
+//
+//   build/bin/shatter_benchmarks --benchmark_filter='fem-lite/' --benchmark_repetitions=5
+
+#include "algorithms/core/primitives.h"
+#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+using namespace shatter;
+
+namespace {
+
+Aabb region(const Vec3& lo, const Vec3& hi) {
+  Aabb box;
+  box.extend(lo);
+  box.extend(hi);
+  return box;
+}
+
+void fem_lite_resolution(benchmark::State& state) {
+  FemLiteSettings settings;
+  settings.resolution = static_cast<int>(state.range(0));
+  settings.supports = {region(Vec3(-1, -1, -1), Vec3(0.1, 1, 0.01)), region(Vec3(3.9, -1, -1), Vec3(5, 1, 0.01))};
+  const Mesh beam = make_box(Vec3(4, 0.5, 0.5), Vec3(2, 0.25, 0.25));
+  FractureParams params;
+  params.fragments = 2;
+  params.seed = 3;
+  params.impact = Impact{Vec3(2, 0.25, 0.5), -Vec3::UnitZ(), 1000.0, 0.0};
+  const FemLiteFracturer fem(settings);
+  Result<FemLiteAnalysis> analysis = fem.analyse(beam, params);
+  for (auto _ : state) {
+    analysis = fem.analyse(beam, params);
+    benchmark::DoNotOptimize(analysis);
+  }
+  if (!analysis || analysis->planes.empty()) {
+    state.SkipWithError("fem-lite found no crack plane");
+    return;
+  }
+  const Plane& first = analysis->planes.front();
+  state.counters["elements"] = analysis->elements;
+  state.counters["location_error"] = std::abs(first.point.x() - 2.0) / 4.0;
+  state.counters["angle_deg"] = std::acos(std::min(1.0, std::abs(first.normal.normalized().x()))) * 180.0 / M_PI;
+  state.counters["residual"] = analysis->solve.residual;
+}
+
+}  // namespace
+
+BENCHMARK(fem_lite_resolution)->Name("fem-lite/beam")->Arg(4)->Arg(8)->Arg(12)->Arg(16)->Arg(24)->Arg(32)
+    ->Unit(benchmark::kMillisecond);
