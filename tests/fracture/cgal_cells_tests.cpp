@@ -4,6 +4,7 @@
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/recursive_slicing.h"
+#include "algorithms/core/mesh_validation.h"
 #include "tests/support/shapes.h"
 
 #include <catch2/catch.hpp>
@@ -12,7 +13,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -24,18 +24,9 @@ namespace {
 /// The half-space {x : dot(normal, x - point) <= 0}.
 Plane below(Vec3 point, Vec3 normal) { return Plane{point, normal}; }
 
-/// Every directed edge used once and its reverse used once: closed, 2-manifold along edges, oriented.
+/// Closed, 2-manifold along edges and consistently oriented (mesh_validation.h), one tag per triangle.
 bool closed_and_oriented(const Mesh& m) {
-  if (m.tags.size() != m.triangles.size()) return false;
-  std::map<std::pair<int, int>, int> directed;
-  for (const Triangle& t : m.triangles)
-    for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
-  for (const auto& [edge, count] : directed) {
-    if (count != 1) return false;
-    const auto reverse = directed.find({edge.second, edge.first});
-    if (reverse == directed.end() || reverse->second != 1) return false;
-  }
-  return true;
+  return m.tags.size() == m.triangles.size() && is_closed_and_oriented(m);
 }
 
 std::vector<Fragment> fracture(const Mesh& solid, const std::vector<ConvexCell>& cells) {
