@@ -51,12 +51,20 @@ bool contains(const Mesh& mesh, const Vec3& p) { return winding_number(mesh, p) 
 }  // namespace
 
 std::vector<int> fragments_near_impact(std::span<const Fragment> fragments, const Impact& impact) {
+  return fragments_near_impact(fragments, impact, NearImpactOptions{});
+}
+
+std::vector<int> fragments_near_impact(std::span<const Fragment> fragments, const Impact& impact,
+                                       const NearImpactOptions& options) {
+  const auto eligible = [&](std::size_t i) { return options.eligible.empty() || options.eligible[i] != 0; };
+  const bool cull = options.cull_by_box;
   std::vector<int> hit;
   const Vec3& p = impact.point;
   if (impact.radius > 0) {
     for (std::size_t i = 0; i < fragments.size(); ++i) {
+      if (!eligible(i)) continue;
       const Mesh& m = fragments[i].mesh;
-      if (distance_to_box(bounding_box(m), p) > impact.radius) continue;
+      if (cull && distance_to_box(bounding_box(m), p) > impact.radius) continue;
       if (distance_to_surface(m, p) <= impact.radius || contains(m, p)) hit.push_back(static_cast<int>(i));
     }
     return hit;
@@ -65,10 +73,11 @@ std::vector<int> fragments_near_impact(std::span<const Fragment> fragments, cons
   int nearest = -1;
   double nearest_distance = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i < fragments.size(); ++i) {
+    if (!eligible(i)) continue;
     const Mesh& m = fragments[i].mesh;
     const Aabb box = bounding_box(m);
-    if (box.contains(p) && contains(m, p)) return {static_cast<int>(i)};
-    if (distance_to_box(box, p) >= nearest_distance) continue;
+    if ((!cull || box.contains(p)) && contains(m, p)) return {static_cast<int>(i)};
+    if (cull && distance_to_box(box, p) >= nearest_distance) continue;
     const double d = distance_to_surface(m, p);
     if (d < nearest_distance) {
       nearest_distance = d;

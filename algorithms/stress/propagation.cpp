@@ -59,6 +59,10 @@ Result<PropagationResult> propagate(const StressModel& model, const SupportGraph
       touched.push_back(graph.bonds[static_cast<std::size_t>(b)].a);
       touched.push_back(graph.bonds[static_cast<std::size_t>(b)].b);
     }
+    if (settings.resolve_everything) {
+      touched.resize(graph.nodes.size());
+      std::iota(touched.begin(), touched.end(), 0);
+    }
     out.break_order.push_back(failing);
     ++out.rounds;
     current = model.reevaluate(graph, loads, material, next, touched);

@@ -19,6 +19,10 @@ namespace shatter {
 /// Limits of a cascade.
 struct PropagationSettings {
   int max_rounds = 10000;   ///< rounds of breaking before giving up (each round breaks >= 1 bond)
+  /// Re-solve every component after each round, not only those a break touched. The answer is the
+  /// same (an untouched component's system has not changed); this is the reference the frame
+  /// pipeline's no-skip mode runs to prove the partial re-solve result-neutral.
+  bool resolve_everything = false;
 };
 
 /// The final state of a cascade.

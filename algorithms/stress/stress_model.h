@@ -67,6 +67,10 @@ class StressModel {
   virtual ~StressModel() = default;
   /// Registered name, e.g. "von-mises".
   [[nodiscard]] virtual std::string_view name() const = 0;
+  /// True when the model breaks bonds only through the static solve of anchored components: with zero
+  /// loads nothing breaks, and components without an anchor are never evaluated. The frame pipeline
+  /// then skips the solve of a scene with no gravity or no anchors (result-neutral by this contract).
+  [[nodiscard]] virtual bool driven_by_loads() const { return true; }
   /// Evaluates the intact graph. Errors for a bad material or bad loads.
   [[nodiscard]] virtual Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
                                                       const Material& material) const = 0;

@@ -20,6 +20,8 @@ void add_list_command(CLI::App& app, int& exit_code);
 void add_fracture_command(CLI::App& app, int& exit_code);
 /// `shatterbench stress`.
 void add_stress_command(CLI::App& app, int& exit_code);
+/// `shatterbench grid`.
+void add_grid_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
 void add_table_command(CLI::App& app, int& exit_code);
 

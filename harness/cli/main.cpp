@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   add_list_command(app, exit_code);
   add_fracture_command(app, exit_code);
   add_stress_command(app, exit_code);
+  add_grid_command(app, exit_code);
   add_table_command(app, exit_code);
   try {
     app.parse(argc, argv);

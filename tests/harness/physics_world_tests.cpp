@@ -56,7 +56,8 @@ TEST_CASE("physics-world: a box resting on the ground stays at rest", "[physics]
   s.ground_z = 0.0;
   s.allow_sleeping = false;  // measure the solver, not the sleeping
   PhysicsWorld world(s);
-  const int id = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(0, 0, 0.5 + s.collision_margin)),
+  // Hulls are inset by the margin: the mesh itself touches the ground.
+  const int id = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(0, 0, 0.5)),
                                     1000.0, false);
   for (int i = 0; i < 120; ++i) world.step();
   CHECK(world.linear_velocity(id).norm() < 1e-2);
@@ -178,4 +179,23 @@ TEST_CASE("physics-world: bad settings are an error naming the field", "[physics
   s.restitution = 2.0;
   CHECK_FALSE(PhysicsWorld::create(s).ok());
   CHECK(PhysicsWorld::create(PhysicsSettings{}).ok());
+}
+
+TEST_CASE("physics-world: fragments that share a face start touching, not pushed apart", "[physics]") {
+  // Hulls are inset by the collision margin, so a stack of blocks that share faces (as fragments of one
+  // fracture do) is at rest from the first step: nothing is ejected by resolving a margin overlap.
+  PhysicsSettings s;
+  s.ground = true;
+  s.collision_margin = 0.02;  // large, so a missing inset would show as centimetres of motion
+  PhysicsWorld world(s);
+  const int base = world.add_fragment(box_fragment(Vec3(1, 1, 1), Vec3(0, 0, 0.5)), 2400.0, true);
+  const int left = world.add_fragment(box_fragment(Vec3(0.5, 1, 1), Vec3(-0.25, 0, 1.5)), 2400.0, false);
+  const int right = world.add_fragment(box_fragment(Vec3(0.5, 1, 1), Vec3(0.25, 0, 1.5)), 2400.0, false);
+  for (int i = 0; i < 60; ++i) world.step();
+  REQUIRE(world.contains(base));
+  for (const int id : {left, right}) {
+    const Vec3 start = id == left ? Vec3(-0.25, 0, 1.5) : Vec3(0.25, 0, 1.5);
+    CHECK((world.position(id) - start).norm() < 0.005);
+    CHECK(world.linear_velocity(id).norm() < 0.05);
+  }
 }

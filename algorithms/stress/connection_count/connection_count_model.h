@@ -20,6 +20,8 @@ class ConnectionCountModel final : public StressModel {
   explicit ConnectionCountModel(ConnectionCountSettings settings = {}) : settings_(settings) {}
 
   [[nodiscard]] std::string_view name() const override { return "connection-count"; }
+  /// The count rule ignores loads and judges unanchored pieces too.
+  [[nodiscard]] bool driven_by_loads() const override { return false; }
   [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
                                               const Material& material) const override;
   /// Counts are cheap: the whole graph is re-checked whatever `touched` holds.

@@ -4,10 +4,13 @@
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/QR>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -133,9 +136,50 @@ struct PhysicsWorld::Impl {
     return *bodies[id];
   }
 
-  /// A convex hull of `points` (mesh frame), expressed in the principal frame (`centroid`, `axes`).
-  std::unique_ptr<btCollisionShape> make_hull(const std::vector<Vec3>& points, const Vec3& centroid,
+  /// The fragment's vertices moved inward so that its hull plus the collision margin is the fragment
+  /// again: each vertex moves by the d with n . d = -margin for every distinct plane n of its faces
+  /// (least squares, minimum norm: exact for a corner of three planes, on an edge or in a face it
+  /// moves along the shared normals only). Each move is capped at half the vertex's distance from the
+  /// centroid, so a needle corner cannot be pushed through the fragment.
+  std::vector<Vec3> inset_points(const Fragment& fragment) const {
+    const Mesh& mesh = fragment.mesh;
+    const double margin = settings.collision_margin;
+    std::vector<Vec3> points = mesh.vertices;
+    if (margin <= 0.0) return points;
+    std::vector<std::vector<Vec3>> normals(points.size());
+    for (const Triangle& t : mesh.triangles) {
+      const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+      Vec3 n = (mesh.vertices[static_cast<std::size_t>(t[1])] - a).cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a);
+      const double len = n.norm();
+      if (!(len > 0.0)) continue;
+      n /= len;
+      for (const std::int32_t v : t) {
+        auto& list = normals[static_cast<std::size_t>(v)];
+        if (std::none_of(list.begin(), list.end(), [&](const Vec3& m) { return m.dot(n) > 1.0 - 1e-9; }))
+          list.push_back(n);
+      }
+    }
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const auto& list = normals[i];
+      if (list.empty()) continue;
+      Eigen::Matrix<double, Eigen::Dynamic, 3> n(static_cast<Eigen::Index>(list.size()), 3);
+      for (std::size_t k = 0; k < list.size(); ++k) n.row(static_cast<Eigen::Index>(k)) = list[k].transpose();
+      const Eigen::VectorXd rhs = Eigen::VectorXd::Constant(n.rows(), -margin);
+      Vec3 d = n.completeOrthogonalDecomposition().solve(rhs);
+      const double cap = 0.5 * (points[i] - fragment.mass.centroid).norm();
+      if (!d.allFinite()) continue;
+      if (d.norm() > cap) d *= cap / d.norm();
+      points[i] += d;
+    }
+    return points;
+  }
+
+  /// A convex hull of `fragment`'s vertices, inset by the collision margin (inset_points) so that
+  /// neighbouring fragments that share a face start touching instead of interpenetrating, expressed in
+  /// the body's principal frame (`centroid`, `axes`).
+  std::unique_ptr<btCollisionShape> make_hull(const Fragment& fragment, const Vec3& centroid,
                                               const Eigen::Matrix3d& axes) const {
+    const std::vector<Vec3> points = inset_points(fragment);
     auto hull = std::make_unique<btConvexHullShape>();
     for (const Vec3& p : points) hull->addPoint(to_bt(axes.transpose() * (p - centroid)), false);
     hull->recalcLocalAabb();
@@ -165,13 +209,13 @@ struct PhysicsWorld::Impl {
     const Vec3 moments = eig.eigenvalues();  // ascending, kg m^2
 
     if (fragments.size() == 1) {
-      b->shape = make_hull(fragments[0].mesh.vertices, m.centroid, b->principal);
+      b->shape = make_hull(fragments[0], m.centroid, b->principal);
     } else {
       auto compound = std::make_unique<btCompoundShape>();
       btTransform identity;
       identity.setIdentity();
       for (const Fragment& f : fragments) {
-        b->children.push_back(make_hull(f.mesh.vertices, m.centroid, b->principal));
+        b->children.push_back(make_hull(f, m.centroid, b->principal));
         compound->addChildShape(identity, b->children.back().get());
       }
       b->shape = std::move(compound);

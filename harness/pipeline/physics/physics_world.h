@@ -36,8 +36,10 @@ struct PhysicsSettings {
   /// vertices; a trigger, not an exact cap); 0 = never reduce. Mass properties always come from the
   /// full mesh, only the collider is reduced.
   int max_hull_vertices = 0;
-  /// m, Bullet's collision margin around each hull (Bullet's default is 0.04; contacts happen this
-  /// far outside the hull). >= 0.
+  /// m, Bullet's collision margin around each hull (Bullet's default is 0.04). Each hull vertex is
+  /// first moved inward so that every face plane through it moves in by the margin: hull plus margin is
+  /// the fragment again, and fragments that share a face start touching, not interpenetrating (which
+  /// would cost deep-penetration solves and push them apart). >= 0.
   double collision_margin = 0.01;
   double friction = 0.5;                 ///< Coulomb friction coefficient of every body and the ground
   double restitution = 0.0;              ///< coefficient of restitution of every body and the ground

@@ -1,0 +1,194 @@
+#include "harness/grid/grid_runner.h"
+
+#include "algorithms/register_all.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+namespace shatter {
+namespace {
+
+Status check_counts(const std::vector<int>& counts, const std::string& what) {
+  if (counts.empty()) return Error{what + ": at least one count is needed"};
+  for (const int n : counts)
+    if (n < 1) return Error{what + ": counts must be >= 1, got " + std::to_string(n)};
+  return {};
+}
+
+double median_over(const std::vector<GridSample>& samples, double GridSample::*field) {
+  std::vector<double> v;
+  for (const GridSample& s : samples) v.push_back(s.*field);
+  return median_of(v);
+}
+
+StageTimes median_stages(const std::vector<GridSample>& samples, StageTimes GridSample::*field) {
+  StageTimes out{};
+  std::vector<double> v;
+  for (std::size_t k = 0; k < kStageCount; ++k) {
+    v.clear();
+    for (const GridSample& s : samples) v.push_back((s.*field)[k]);
+    out[k] = median_of(v);
+  }
+  return out;
+}
+
+std::string fmt_cell_error(int prefracture, int runtime, const std::string& message) {
+  return "cell " + std::to_string(prefracture) + " x " + std::to_string(runtime) + ": " + message;
+}
+
+GridSample sample_of(const RunResult& run) {
+  GridSample s;
+  s.seed = run.prefracture_seed;
+  s.frame_ms = run.frame_ms;
+  s.event_ms = run.event_ms;
+  s.worst_frame_ms = run.frame_ms.empty() ? 0.0 : *std::max_element(run.frame_ms.begin(), run.frame_ms.end());
+  s.stages_ms = run.frame_stage_ms;
+  s.setup_ms = run.setup_ms;
+  s.cache_hit = run.cache_hit;
+  s.fragments = static_cast<int>(run.fragments.size());
+  s.hit = static_cast<int>(run.hit.size());
+  for (const auto& p : run.pieces) s.pieces += static_cast<int>(p.size());
+  s.broken_bonds = static_cast<int>(std::count(run.broken.begin(), run.broken.end(), std::uint8_t{1}));
+  s.falling_clusters = static_cast<int>(run.falling_clusters.size());
+  s.bodies = run.bodies;
+  s.solver = run.solver;
+  return s;
+}
+
+void add_error(CellError& e, const RunResult& run, bool first) {
+  const FractureMetrics& p = run.prefracture_error;
+  const RuntimeFractureError& r = run.runtime_error;
+  e.prefracture_volume_error = std::max(e.prefracture_volume_error, p.volume_error);
+  e.prefracture_partition_error = std::max(e.prefracture_partition_error, p.partition_error);
+  e.prefracture_all_closed = e.prefracture_all_closed && p.all_closed;
+  e.prefracture_min_fragment_volume =
+      first ? p.min_fragment_volume : std::min(e.prefracture_min_fragment_volume, p.min_fragment_volume);
+  e.runtime_volume_error = std::max(e.runtime_volume_error, r.volume_error);
+  e.runtime_partition_error = std::max(e.runtime_partition_error, r.partition_error);
+  e.runtime_all_closed = e.runtime_all_closed && r.all_closed;
+  if (r.pieces > 0)
+    e.runtime_min_fragment_volume = e.runtime_min_fragment_volume == 0.0
+                                        ? r.min_fragment_volume
+                                        : std::min(e.runtime_min_fragment_volume, r.min_fragment_volume);
+  e.solver_converged = e.solver_converged && run.solver.converged;
+  e.solver_residual = std::max(e.solver_residual, run.solver.residual);
+}
+
+void merge_stages(GridCell& cell, const RunResult& run) {
+  for (const std::string& name : run.stages.run())
+    if (std::find(cell.stages_run.begin(), cell.stages_run.end(), name) == cell.stages_run.end())
+      cell.stages_run.push_back(name);
+  // Keep data-flow order.
+  std::vector<std::string> ordered;
+  for (const Stage s : kAllStages) {
+    const std::string name(stage_name(s));
+    if (std::find(cell.stages_run.begin(), cell.stages_run.end(), name) != cell.stages_run.end())
+      ordered.push_back(name);
+  }
+  cell.stages_run = std::move(ordered);
+  for (const StageSkip& skip : run.stages.skips()) {
+    const bool known = std::any_of(cell.stages_skipped.begin(), cell.stages_skipped.end(), [&](const StageSkip& s) {
+      return s.stage == skip.stage && s.reason == skip.reason;
+    });
+    if (!known) cell.stages_skipped.push_back(skip);
+  }
+}
+
+}  // namespace
+
+bool GridResult::passed() const {
+  return std::all_of(cells.begin(), cells.end(), [](const GridCell& c) { return c.within_budget; });
+}
+
+Status check_grid_options(const Case& c, const GridOptions& o) {
+  const auto& reg = registries();
+  if (!o.fracturer.empty()) {
+    if (auto f = reg.fracturers.create(o.fracturer); !f) return Error{"--fracturer: " + f.error().message};
+  } else {
+    if (!c.prefracture.explicit_planes())
+      if (auto f = reg.fracturers.create(c.prefracture.fracturer); !f)
+        return Error{c.name + ": prefracture.fracturer: " + f.error().message};
+    if (auto f = reg.fracturers.create(c.runtime.fracturer); !f)
+      return Error{c.name + ": runtime.fracturer: " + f.error().message};
+  }
+  if (!o.stress_model.empty()) {
+    if (auto m = reg.stress_models.create(o.stress_model); !m) return Error{"--stress: " + m.error().message};
+  } else if (auto m = reg.stress_models.create(c.stress.model); !m) {
+    return Error{c.name + ": stress.model: " + m.error().message};
+  }
+  if (!std::isfinite(o.budget_ms) || o.budget_ms < 0.0)
+    return Error{"--budget-ms: must be a finite number > 0, got " + std::to_string(o.budget_ms)};
+  if (o.repetitions < 1) return Error{"--repetitions: must be >= 1, got " + std::to_string(o.repetitions)};
+  if (o.frames < 0) return Error{"--frames: must be >= 1, got " + std::to_string(o.frames)};
+  if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
+  if (!o.prefracture.empty())
+    if (Status s = check_counts(o.prefracture, "--prefracture"); !s) return s;
+  if (!o.runtime.empty())
+    if (Status s = check_counts(o.runtime, "--runtime"); !s) return s;
+  return {};
+}
+
+Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) {
+  const Case& c = prepared.spec;
+  if (Status s = check_grid_options(c, o); !s) return s.error();
+  const auto start = std::chrono::steady_clock::now();
+  // An explicit-plane pre-fracture has one fragment count: the grid's pre-fracture axis collapses to it.
+  std::vector<int> prefracture = o.prefracture.empty() ? c.grid.prefracture : o.prefracture;
+  if (c.prefracture.explicit_planes()) prefracture = {static_cast<int>(c.prefracture.planes.size()) + 1};
+  const std::vector<int>& runtime = o.runtime.empty() ? c.grid.runtime : o.runtime;
+
+  GridResult out;
+  out.budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
+  out.repetitions = o.repetitions;
+  out.frames = o.frames > 0 ? o.frames : c.frames;
+  out.no_skip = o.no_skip;
+  const int total = static_cast<int>(prefracture.size() * runtime.size()) * o.repetitions;
+  int done = 0;
+  for (const int p : prefracture) {
+    for (const int r : runtime) {
+      GridCell cell;
+      cell.prefracture = p;
+      cell.runtime = r;
+      cell.prefracturer = c.prefracture.explicit_planes() ? "planes"
+                          : o.fracturer.empty()           ? c.prefracture.fracturer
+                                                          : o.fracturer;
+      cell.fracturer = o.fracturer.empty() ? c.runtime.fracturer : o.fracturer;
+      cell.stress = o.stress_model.empty() ? c.stress.model : o.stress_model;
+      for (int rep = 0; rep < o.repetitions; ++rep) {
+        RunOptions run;
+        run.prefracture_fragments = p;
+        run.runtime_fragments = r;
+        if (!o.fracturer.empty()) {
+          run.prefracture_fracturer = o.fracturer;
+          run.runtime_fracturer = o.fracturer;
+        }
+        run.stress_model = o.stress_model;
+        run.repetition = static_cast<std::uint64_t>(rep);
+        run.frames = out.frames;
+        run.no_skip = o.no_skip;
+        run.cache = o.cache;
+        run.partition_samples = o.partition_samples;
+        Result<RunResult> result = run_destruction(prepared, run);
+        if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
+        cell.samples.push_back(sample_of(*result));
+        add_error(cell.error, *result, rep == 0);
+        merge_stages(cell, *result);
+        if (o.progress) o.progress(++done, total);
+      }
+      std::vector<double> frames;
+      for (const GridSample& s : cell.samples) frames.insert(frames.end(), s.frame_ms.begin(), s.frame_ms.end());
+      cell.frame_ms = sample_statistics(frames);
+      cell.worst_frame_ms = median_over(cell.samples, &GridSample::worst_frame_ms);
+      cell.event_ms = median_over(cell.samples, &GridSample::event_ms);
+      cell.stages_ms = median_stages(cell.samples, &GridSample::stages_ms);
+      cell.setup_ms = median_stages(cell.samples, &GridSample::setup_ms);
+      cell.within_budget = cell.worst_frame_ms <= out.budget_ms;
+      out.cells.push_back(std::move(cell));
+    }
+  }
+  out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+}  // namespace shatter

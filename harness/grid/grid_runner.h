@@ -1,0 +1,108 @@
+#pragma once
+/// The grid runner (DESIGN.md section 8): every cell of pre-fracture count x runtime count, each run
+/// `repetitions` times with a different seed, summarised per cell and gated on the frame budget.
+///
+/// Design note: the gate is on `worst_frame_ms`, the median over repetitions of each repetition's
+/// slowest frame: the hitch a player sees, usually the event frame, robust to one noisy repetition
+/// (a median of 3 needs two slow repetitions to move). The other figures are descriptive: `frame_ms`
+/// pools every frame of every repetition; stage times are medians over repetitions of each
+/// repetition's total per stage; error figures are the worst over repetitions.
+
+#include "algorithms/core/result.h"
+#include "harness/pipeline/destruction_run.h"
+#include "harness/results/sample_statistics.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shatter {
+
+/// What a grid run does; empty names and lists take the case's values.
+struct GridOptions {
+  std::string fracturer;               ///< runtime and pre-fracture algorithm (empty: the case's)
+  std::string stress_model;            ///< stress model (empty: the case's)
+  double budget_ms = 0.0;              ///< frame budget, ms (0: the case's budget_ms)
+  int repetitions = 3;                 ///< runs per cell, each with its own seed, >= 1
+  int frames = 0;                      ///< frames per run (0: the case's)
+  std::vector<int> prefracture;        ///< pre-fracture counts (empty: the case's grid.prefracture)
+  std::vector<int> runtime;            ///< runtime counts (empty: the case's grid.runtime)
+  bool no_skip = false;                ///< every automatic skip off (see destruction_run.h)
+  const PrefractureCache* cache = nullptr;  ///< pre-fracture cache, or none
+  int partition_samples = 256;         ///< points of the partition-error tests
+  /// Called after each run with (runs done, runs in all); may be empty.
+  std::function<void(int, int)> progress;
+};
+
+/// One repetition of one cell, as kept in the results.
+struct GridSample {
+  std::uint64_t seed = 0;                        ///< seed of the pre-fracture and runtime fracture
+  std::vector<double> frame_ms;                  ///< every frame
+  double event_ms = 0.0;                         ///< the first event frame
+  double worst_frame_ms = 0.0;                   ///< the slowest frame
+  StageTimes stages_ms{};                        ///< stage times inside frames
+  StageTimes setup_ms{};                         ///< offline stage times
+  bool cache_hit = false;                        ///< the pre-fracture came from the cache
+  int fragments = 0;                             ///< pre-fracture fragments made
+  int hit = 0;                                   ///< fragments the impact fractured
+  int pieces = 0;                                ///< runtime pieces made
+  int broken_bonds = 0;                          ///< bonds broken by the end
+  int falling_clusters = 0;                      ///< clusters that fell
+  int bodies = 0;                                ///< physics bodies at the end
+  SolverReport solver;                           ///< stress solves summed
+};
+
+/// Worst error figures over a cell's repetitions.
+struct CellError {
+  double prefracture_volume_error = 0.0;
+  double prefracture_partition_error = 0.0;
+  bool prefracture_all_closed = true;
+  double prefracture_min_fragment_volume = 0.0;
+  double runtime_volume_error = 0.0;
+  double runtime_partition_error = 0.0;
+  bool runtime_all_closed = true;
+  double runtime_min_fragment_volume = 0.0;
+  bool solver_converged = true;
+  double solver_residual = 0.0;
+};
+
+/// One cell: its settings, raw samples and summary.
+struct GridCell {
+  int prefracture = 0;                 ///< requested pre-fracture fragments
+  int runtime = 0;                     ///< requested runtime fragments per hit fragment
+  std::string prefracturer;            ///< pre-fracture algorithm
+  std::string fracturer;               ///< runtime algorithm
+  std::string stress;                  ///< stress model
+  std::vector<GridSample> samples;     ///< one per repetition
+  double worst_frame_ms = 0.0;         ///< median over repetitions of each one's slowest frame
+  SampleStatistics frame_ms;           ///< over every frame of every repetition
+  double event_ms = 0.0;               ///< median over repetitions of the event frame
+  StageTimes stages_ms{};              ///< per stage, median over repetitions (inside frames)
+  StageTimes setup_ms{};               ///< per stage, median over repetitions (offline)
+  CellError error;                     ///< worst over repetitions
+  std::vector<std::string> stages_run; ///< union over repetitions, in data-flow order
+  std::vector<StageSkip> stages_skipped;  ///< union over repetitions, first seen first
+  bool within_budget = true;           ///< worst_frame_ms <= budget
+};
+
+/// A whole grid.
+struct GridResult {
+  double budget_ms = 0.0;              ///< the budget the cells were judged against
+  int repetitions = 0;                 ///< runs per cell
+  int frames = 0;                      ///< frames per run
+  bool no_skip = false;                ///< automatic skips were off
+  std::vector<GridCell> cells;         ///< pre-fracture major, runtime minor
+  double wall_s = 0.0;                 ///< wall time of the whole grid, s
+
+  /// True when every cell is within the budget.
+  [[nodiscard]] bool passed() const;
+};
+
+/// Checks `options` against `c` before anything runs: algorithm names exist (errors name the flag or
+/// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1.
+Status check_grid_options(const Case& c, const GridOptions& options);
+
+/// Runs the grid of `prepared` (options checked by check_grid_options).
+Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options);
+
+}  // namespace shatter

@@ -1,0 +1,222 @@
+#include "harness/pipeline/prefracture_cache.h"
+
+#include "harness/results/atomic_file.h"
+
+#include <fmt/core.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <system_error>
+#include <type_traits>
+
+#if !defined(SHATTER_GIT_COMMIT)
+#error "SHATTER_GIT_COMMIT must be defined by the build"
+#endif
+
+namespace shatter {
+namespace {
+
+constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '1'};
+
+/// FNV-1a, 64 bit, fed field by field.
+class Fnv1a {
+ public:
+  void bytes(const void* data, std::size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < n; ++i) {
+      hash_ ^= p[i];
+      hash_ *= 0x100000001b3ULL;
+    }
+  }
+  template <class T>
+  void value(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    bytes(&v, sizeof v);
+  }
+  void text(const std::string& s) {
+    value(s.size());
+    bytes(s.data(), s.size());
+  }
+  [[nodiscard]] std::uint64_t hash() const { return hash_; }
+
+ private:
+  std::uint64_t hash_ = 0xcbf29ce484222325ULL;
+};
+
+/// The commit plus the running executable's size and modification time: changes with every rebuild.
+const std::string& code_identity() {
+  static const std::string identity = [] {
+    std::string id = SHATTER_GIT_COMMIT;
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+      const auto size = std::filesystem::file_size(exe, ec);
+      if (!ec) id += fmt::format("/{}", size);
+      const auto time = std::filesystem::last_write_time(exe, ec);
+      if (!ec) id += fmt::format("/{}", time.time_since_epoch().count());
+    }
+    return id;
+  }();
+  return identity;
+}
+
+std::uint64_t key_hash(const Mesh& solid, const PrefractureKey& key) {
+  Fnv1a h;
+  h.bytes(kMagic, sizeof kMagic);
+  h.text(code_identity());
+  h.value(solid.vertices.size());
+  for (const Vec3& v : solid.vertices) h.bytes(v.data(), 3 * sizeof(double));
+  h.value(solid.triangles.size());
+  for (const Triangle& t : solid.triangles) h.bytes(t.data(), 3 * sizeof(std::int32_t));
+  for (const FaceTag t : solid.tags) h.value(t);
+  h.text(key.fracturer);
+  h.value(key.fragments);
+  h.value(key.seed);
+  h.value(key.planes.size());
+  for (const Plane& p : key.planes) {
+    h.bytes(p.point.data(), 3 * sizeof(double));
+    h.bytes(p.normal.data(), 3 * sizeof(double));
+  }
+  return h.hash();
+}
+
+/// Appends raw bytes of trivially copyable values.
+class Writer {
+ public:
+  template <class T>
+  void value(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    bytes(&v, sizeof v);
+  }
+  void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
+  [[nodiscard]] const std::string& data() const { return out_; }
+
+ private:
+  std::string out_;
+};
+
+/// Reads raw values back with bounds checks; any overrun makes ok() false.
+class Reader {
+ public:
+  explicit Reader(const std::string& in) : in_(in) {}
+  template <class T>
+  T value() {
+    static_assert(std::is_trivially_copyable_v<T>);
+    T v{};
+    bytes(&v, sizeof v);
+    return v;
+  }
+  void bytes(void* p, std::size_t n) {
+    if (!ok_ || in_.size() - pos_ < n) {
+      ok_ = false;
+      return;
+    }
+    std::memcpy(p, in_.data() + pos_, n);
+    pos_ += n;
+  }
+  [[nodiscard]] bool ok() const { return ok_; }
+  [[nodiscard]] bool at_end() const { return pos_ == in_.size(); }
+  [[nodiscard]] std::size_t left() const { return in_.size() - pos_; }
+
+ private:
+  const std::string& in_;
+  std::size_t pos_ = 0;
+  bool ok_ = true;
+};
+
+void write_header(Writer& w, std::uint64_t hash, const Mesh& solid, const PrefractureKey& key) {
+  w.bytes(kMagic, sizeof kMagic);
+  w.value(hash);
+  w.value(static_cast<std::uint64_t>(solid.vertices.size()));
+  w.value(static_cast<std::uint64_t>(solid.triangles.size()));
+  w.value(static_cast<std::int32_t>(key.fragments));
+  w.value(key.seed);
+  w.value(static_cast<std::uint64_t>(key.planes.size()));
+  w.value(static_cast<std::uint64_t>(key.fracturer.size()));
+  w.bytes(key.fracturer.data(), key.fracturer.size());
+}
+
+}  // namespace
+
+std::string prefracture_cache_key(const Mesh& solid, const PrefractureKey& key) {
+  return fmt::format("{:016x}", key_hash(solid, key));
+}
+
+PrefractureCache::PrefractureCache(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+std::filesystem::path PrefractureCache::default_folder() {
+  if (const char* v = std::getenv("SHATTERBENCH_CACHE"); v != nullptr && *v != '\0') return v;
+  if (const char* v = std::getenv("XDG_CACHE_HOME"); v != nullptr && *v != '\0')
+    return std::filesystem::path(v) / "shatterbench";
+  if (const char* v = std::getenv("HOME"); v != nullptr && *v != '\0')
+    return std::filesystem::path(v) / ".cache" / "shatterbench";
+  return {};
+}
+
+std::filesystem::path PrefractureCache::file_for(const Mesh& solid, const PrefractureKey& key) const {
+  return folder_ / ("prefracture-" + prefracture_cache_key(solid, key) + ".bin");
+}
+
+std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, const PrefractureKey& key) const {
+  if (folder_.empty()) return std::nullopt;
+  std::ifstream in(file_for(solid, key), std::ios::binary);
+  if (!in) return std::nullopt;
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+
+  Writer expected;
+  write_header(expected, key_hash(solid, key), solid, key);
+  if (data.compare(0, expected.data().size(), expected.data()) != 0) return std::nullopt;
+  Reader r(data);
+  std::string skip(expected.data().size(), '\0');
+  r.bytes(skip.data(), skip.size());
+
+  const auto count = r.value<std::uint64_t>();
+  if (!r.ok() || count > r.left()) return std::nullopt;
+  std::vector<Fragment> fragments(static_cast<std::size_t>(count));
+  for (Fragment& f : fragments) {
+    const auto nv = r.value<std::uint64_t>();
+    const auto nt = r.value<std::uint64_t>();
+    if (!r.ok() || nv > r.left() / (3 * sizeof(double)) || nt > r.left() / (3 * sizeof(std::int32_t))) return std::nullopt;
+    f.mesh.vertices.resize(static_cast<std::size_t>(nv));
+    f.mesh.triangles.resize(static_cast<std::size_t>(nt));
+    f.mesh.tags.resize(static_cast<std::size_t>(nt));
+    for (Vec3& v : f.mesh.vertices) r.bytes(v.data(), 3 * sizeof(double));
+    for (Triangle& t : f.mesh.triangles) r.bytes(t.data(), 3 * sizeof(std::int32_t));
+    r.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
+    r.bytes(&f.mass.volume, sizeof(double));
+    r.bytes(f.mass.centroid.data(), 3 * sizeof(double));
+    r.bytes(f.mass.inertia.data(), 9 * sizeof(double));
+    if (!r.ok()) return std::nullopt;
+    for (const Triangle& t : f.mesh.triangles)
+      for (const std::int32_t i : t)
+        if (i < 0 || static_cast<std::uint64_t>(i) >= nv) return std::nullopt;
+  }
+  if (!r.ok() || !r.at_end()) return std::nullopt;
+  return fragments;
+}
+
+bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::span<const Fragment> fragments) const {
+  if (folder_.empty()) return false;
+  std::error_code ec;
+  std::filesystem::create_directories(folder_, ec);
+  if (ec) return false;
+  Writer w;
+  write_header(w, key_hash(solid, key), solid, key);
+  w.value(static_cast<std::uint64_t>(fragments.size()));
+  for (const Fragment& f : fragments) {
+    w.value(static_cast<std::uint64_t>(f.mesh.vertices.size()));
+    w.value(static_cast<std::uint64_t>(f.mesh.triangles.size()));
+    for (const Vec3& v : f.mesh.vertices) w.bytes(v.data(), 3 * sizeof(double));
+    for (const Triangle& t : f.mesh.triangles) w.bytes(t.data(), 3 * sizeof(std::int32_t));
+    w.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
+    w.bytes(&f.mass.volume, sizeof(double));
+    w.bytes(f.mass.centroid.data(), 3 * sizeof(double));
+    w.bytes(f.mass.inertia.data(), 9 * sizeof(double));
+  }
+  return static_cast<bool>(write_file_atomically(file_for(solid, key), w.data()));
+}
+
+}  // namespace shatter

@@ -1,0 +1,38 @@
+#include "harness/pipeline/stage.h"
+
+#include <algorithm>
+
+namespace shatter {
+
+std::string_view stage_name(Stage stage) {
+  switch (stage) {
+    case Stage::prefracture: return "prefracture";
+    case Stage::bonds: return "bonds";
+    case Stage::runtime_fracture: return "runtime_fracture";
+    case Stage::bond_update: return "bond_update";
+    case Stage::stress: return "stress";
+    case Stage::falling_clusters: return "falling_clusters";
+    case Stage::colliders: return "colliders";
+    case Stage::physics: return "physics";
+  }
+  return "unknown";
+}
+
+void StageLog::ran(Stage stage) { ran_[static_cast<std::size_t>(stage)] = true; }
+
+void StageLog::skipped(Stage stage, std::string reason) {
+  StageSkip skip{std::string(stage_name(stage)), std::move(reason)};
+  const bool known = std::any_of(skips_.begin(), skips_.end(), [&](const StageSkip& s) {
+    return s.stage == skip.stage && s.reason == skip.reason;
+  });
+  if (!known) skips_.push_back(std::move(skip));
+}
+
+std::vector<std::string> StageLog::run() const {
+  std::vector<std::string> out;
+  for (const Stage s : kAllStages)
+    if (ran_[static_cast<std::size_t>(s)]) out.emplace_back(stage_name(s));
+  return out;
+}
+
+}  // namespace shatter

@@ -1,0 +1,183 @@
+#include "harness/results/grid_report.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <map>
+
+namespace shatter {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json stages_json(const StageTimes& times) {
+  Json j = Json::object();
+  for (const Stage s : kAllStages) j[std::string(stage_name(s))] = times[static_cast<std::size_t>(s)];
+  return j;
+}
+
+Json statistics_json(const SampleStatistics& s) {
+  return {{"mean", s.mean}, {"median", s.median}, {"p95", s.p95}, {"p99", s.p99}, {"max", s.max}, {"min", s.min}};
+}
+
+Json solver_json(const SolverReport& r) {
+  return {{"solves", r.solves},
+          {"iterations", r.iterations},
+          {"converged", r.converged},
+          {"residual", r.residual},
+          {"unknowns", r.unknowns}};
+}
+
+Json error_json(const CellError& e) {
+  return {{"prefracture",
+           {{"volume_error", e.prefracture_volume_error},
+            {"partition_error", e.prefracture_partition_error},
+            {"all_closed", e.prefracture_all_closed},
+            {"min_fragment_volume", e.prefracture_min_fragment_volume}}},
+          {"runtime",
+           {{"volume_error", e.runtime_volume_error},
+            {"partition_error", e.runtime_partition_error},
+            {"all_closed", e.runtime_all_closed},
+            {"min_fragment_volume", e.runtime_min_fragment_volume}}},
+          {"stress", {{"converged", e.solver_converged}, {"residual", e.solver_residual}}}};
+}
+
+Json sample_json(const GridSample& s) {
+  return {{"seed", s.seed},
+          {"frame_ms", s.frame_ms},
+          {"event_ms", s.event_ms},
+          {"worst_frame_ms", s.worst_frame_ms},
+          {"stages_ms", stages_json(s.stages_ms)},
+          {"setup_ms", stages_json(s.setup_ms)},
+          {"cache_hit", s.cache_hit},
+          {"fragments", s.fragments},
+          {"hit", s.hit},
+          {"pieces", s.pieces},
+          {"broken_bonds", s.broken_bonds},
+          {"falling_clusters", s.falling_clusters},
+          {"bodies", s.bodies},
+          {"solver", solver_json(s.solver)}};
+}
+
+Json cell_json(const GridCell& c) {
+  Json samples = Json::array();
+  for (const GridSample& s : c.samples) samples.push_back(sample_json(s));
+  Json skipped = Json::array();
+  for (const StageSkip& s : c.stages_skipped) skipped.push_back({{"stage", s.stage}, {"reason", s.reason}});
+  return {{"prefracture", c.prefracture},
+          {"runtime", c.runtime},
+          {"prefracturer", c.prefracturer},
+          {"fracturer", c.fracturer},
+          {"stress", c.stress},
+          {"worst_frame_ms", c.worst_frame_ms},
+          {"frame_ms", statistics_json(c.frame_ms)},
+          {"event_ms", c.event_ms},
+          {"stages_ms", stages_json(c.stages_ms)},
+          {"setup_ms", stages_json(c.setup_ms)},
+          {"error", error_json(c.error)},
+          {"within_budget", c.within_budget},
+          {"stages_run", c.stages_run},
+          {"stages_skipped", skipped},
+          {"samples", samples}};
+}
+
+Json case_json(const Case& c) {
+  Json impacts = Json::array();
+  for (const ImpactEvent& e : c.impacts)
+    impacts.push_back({{"frame", e.frame},
+                       {"point", {e.impact.point.x(), e.impact.point.y(), e.impact.point.z()}},
+                       {"direction", {e.impact.direction.x(), e.impact.direction.y(), e.impact.direction.z()}},
+                       {"impulse", e.impact.impulse},
+                       {"radius", e.impact.radius}});
+  return {{"name", c.name},
+          {"description", c.description},
+          {"source", c.source.string()},
+          {"gravity", {c.gravity.x(), c.gravity.y(), c.gravity.z()}},
+          {"anchors", c.anchors.size()},
+          {"impacts", impacts},
+          {"frames", c.frames},
+          {"budget_ms", c.budget_ms},
+          {"needs", c.needs.names()}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json grid_to_json(const GridResult& grid, const Case& c, const RunContext& context) {
+  Json cells = Json::array();
+  for (const GridCell& cell : grid.cells) cells.push_back(cell_json(cell));
+  return {{"schema_version", kGridSchemaVersion},
+          {"context", to_json(context)},
+          {"case", case_json(c)},
+          {"budget_ms", grid.budget_ms},
+          {"repetitions", grid.repetitions},
+          {"frames", grid.frames},
+          {"no_skip", grid.no_skip},
+          {"passed", grid.passed()},
+          {"wall_s", grid.wall_s},
+          {"cells", cells}};
+}
+
+std::string grid_to_csv(const GridResult& grid) {
+  std::string out = "prefracture,runtime,prefracturer,fracturer,stress,worst_frame_ms,mean_ms,median_ms,p95_ms,p99_ms,"
+                    "max_ms,min_ms,event_ms";
+  for (const Stage s : kAllStages) out += fmt::format(",{}_ms", stage_name(s));
+  out += ",prefracture_volume_error,runtime_volume_error,within_budget\n";
+  for (const GridCell& c : grid.cells) {
+    out += fmt::format("{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}", c.prefracture,
+                       c.runtime, c.prefracturer, c.fracturer, c.stress, c.worst_frame_ms, c.frame_ms.mean,
+                       c.frame_ms.median, c.frame_ms.p95, c.frame_ms.p99, c.frame_ms.max, c.frame_ms.min, c.event_ms);
+    for (const Stage s : kAllStages) out += fmt::format(",{:.6f}", c.stages_ms[static_cast<std::size_t>(s)]);
+    out += fmt::format(",{:.3e},{:.3e},{}\n", c.error.prefracture_volume_error, c.error.runtime_volume_error,
+                       c.within_budget ? "true" : "false");
+  }
+  return out;
+}
+
+std::string grid_to_markdown(const GridResult& grid, const std::string& case_name) {
+  std::vector<int> rows, cols;
+  std::map<std::pair<int, int>, const GridCell*> at;
+  for (const GridCell& c : grid.cells) {
+    if (std::find(rows.begin(), rows.end(), c.prefracture) == rows.end()) rows.push_back(c.prefracture);
+    if (std::find(cols.begin(), cols.end(), c.runtime) == cols.end()) cols.push_back(c.runtime);
+    at[{c.prefracture, c.runtime}] = &c;
+  }
+  std::string out;
+  if (!grid.cells.empty()) {
+    const GridCell& first = grid.cells.front();
+    out += fmt::format("Case `{}`: pre-fracture {}, runtime {}, stress {}; worst frame in ms (median over {} "
+                       "repetitions of each one's slowest of {} frames); budget {} ms\n\n",
+                       case_name, first.prefracturer, first.fracturer, first.stress, grid.repetitions, grid.frames,
+                       grid.budget_ms);
+  }
+  out += "| pre-fracture \\ runtime |";
+  for (const int c : cols) out += fmt::format(" {} |", c);
+  out += "\n|---:|";
+  for (std::size_t i = 0; i < cols.size(); ++i) out += "---:|";
+  out += "\n";
+  for (const int r : rows) {
+    out += fmt::format("| {} |", r);
+    for (const int c : cols) {
+      const auto it = at.find({r, c});
+      if (it == at.end()) {
+        out += " |";
+      } else if (it->second->within_budget) {
+        out += fmt::format(" {:.2f} |", it->second->worst_frame_ms);
+      } else {
+        out += fmt::format(" **{:.2f} !** |", it->second->worst_frame_ms);
+      }
+    }
+    out += "\n";
+  }
+  int failed = 0;
+  for (const GridCell& c : grid.cells) failed += c.within_budget ? 0 : 1;
+  if (failed == 0) {
+    out += fmt::format("\nAll {} cells within the {} ms budget ({:.1f} s).\n", grid.cells.size(), grid.budget_ms,
+                       grid.wall_s);
+  } else {
+    out += fmt::format("\n{} of {} cells over the {} ms budget (marked !).\n", failed, grid.cells.size(),
+                       grid.budget_ms);
+  }
+  return out;
+}
+
+}  // namespace shatter

@@ -1,0 +1,29 @@
+#pragma once
+/// A grid's results as the contract JSON (DESIGN.md section 8; schema in docs/results.md), as CSV (one
+/// row per cell) and as the Markdown table printed on stdout.
+
+#include "harness/cases/case.h"
+#include "harness/grid/grid_runner.h"
+#include "harness/results/run_context.h"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace shatter {
+
+/// Version of the results schema written in `schema_version`; bumped on incompatible changes.
+inline constexpr int kGridSchemaVersion = 1;
+
+/// The results JSON: `schema_version`, `context`, `case`, `budget_ms`, `repetitions`, `frames`,
+/// `no_skip`, `passed`, `wall_s`, `cells`.
+nlohmann::ordered_json grid_to_json(const GridResult& grid, const Case& c, const RunContext& context);
+
+/// One header line and one line per cell; times in ms.
+std::string grid_to_csv(const GridResult& grid);
+
+/// The Markdown table: rows pre-fracture counts, columns runtime counts, each cell its worst frame in
+/// ms, marked "**x.xx !**" when over budget; followed by a one-line verdict.
+std::string grid_to_markdown(const GridResult& grid, const std::string& case_name);
+
+}  // namespace shatter

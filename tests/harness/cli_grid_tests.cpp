@@ -1,0 +1,92 @@
+// `shatterbench grid`: the gate, the results JSON and CSV, and bad input.
+
+#include "tests/support/cli_runner.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using shatter::test::line_count;
+using shatter::test::run_cli;
+using shatter::test::slurp;
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "shatter_grid_tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("cli: grid runs all 50 cells and writes the raw samples to JSON and CSV", "[cli][grid]") {
+  const auto dir = scratch("full");
+  const auto json = dir / "grid.json";
+  const auto r = run_cli("grid --case building --repetitions 1 --frames 2 --no-cache --json " + json.string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("| pre-fracture \\ runtime |") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(json));
+  REQUIRE(j.at("cells").size() == 50);
+  REQUIRE(j.at("context").at("fingerprint").get<std::string>().size() == 16);
+  REQUIRE(j.at("budget_ms").get<double>() == Approx(33.3));
+  for (const auto& cell : j.at("cells")) {
+    REQUIRE(cell.at("samples").size() == 1);
+    REQUIRE(cell.at("samples")[0].at("frame_ms").size() == 2);
+    const double worst = cell.at("worst_frame_ms").get<double>();
+    REQUIRE(worst == cell.at("samples")[0].at("worst_frame_ms").get<double>());
+    REQUIRE(worst >= cell.at("frame_ms").at("median").get<double>());
+    REQUIRE(cell.at("error").at("prefracture").at("volume_error").get<double>() < 1e-9);
+    REQUIRE(cell.at("stages_run").size() >= 6);
+  }
+  const std::string csv = slurp(dir / "grid.csv");
+  REQUIRE(line_count(csv) == 51);
+}
+
+TEST_CASE("cli: grid fails the gate on an impossible budget and names the cell", "[cli][grid]") {
+  const auto dir = scratch("gate");
+  const auto json = dir / "grid.json";
+  const auto r = run_cli("grid --case building --repetitions 1 --frames 1 --prefracture 10 --runtime 5 "
+                         "--budget-ms 0.001 --no-cache --json " + json.string());
+  REQUIRE(r.exit_code == 1);
+  REQUIRE(r.err.find("cell 10 x 5") != std::string::npos);
+  REQUIRE(r.out.find("!**") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(json));  // results are still written
+  REQUIRE(j.at("passed").get<bool>() == false);
+  REQUIRE(j.at("cells")[0].at("within_budget").get<bool>() == false);
+}
+
+TEST_CASE("cli: grid refuses bad input with exit 2, one line, and writes nothing", "[cli][grid]") {
+  const auto dir = scratch("bad");
+  const auto json = dir / "grid.json";
+  const std::string out = " --frames 1 --repetitions 1 --no-cache --json " + json.string();
+  struct Bad {
+    std::string args;
+    std::string words;
+  };
+  const Bad cases[] = {
+      {"grid --case no-such-case" + out, "no-such-case"},
+      {"grid --case building --budget-ms -1" + out, "--budget-ms"},
+      {"grid --case building --budget-ms 0" + out, "--budget-ms"},
+      {"grid --case building --budget-ms abc" + out, "--budget-ms"},
+      {"grid --case building --fracturer no-such-algo" + out, "--fracturer"},
+      {"grid --case building --stress no-such-model" + out, "--stress"},
+      {"grid --case building --repetitions 0 --json " + json.string(), "--repetitions"},
+      {"grid --case building --frames 0 --json " + json.string(), "--frames"},
+      {"grid --case building --prefracture 0,10" + out, "--prefracture"},
+      {"grid --case building --bogus" + out, "bogus"},
+  };
+  for (const Bad& b : cases) {
+    const auto r = run_cli(b.args);
+    INFO(b.args << "\n" << r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(line_count(r.err) == 1);
+    REQUIRE(r.err.find(b.words) != std::string::npos);
+    REQUIRE_FALSE(std::filesystem::exists(json));
+  }
+  REQUIRE(std::filesystem::is_empty(dir));
+}
