@@ -36,6 +36,10 @@ struct PhysicsSettings {
   /// vertices; a trigger, not an exact cap); 0 = never reduce. Mass properties always come from the
   /// full mesh, only the collider is reduced.
   int max_hull_vertices = 0;
+  /// A fragment with more vertices than this gets its convex hull computed (interior points dropped);
+  /// below, every vertex is kept as a hull point (same shape, Bullet's support mapping ignores interior
+  /// points; computing the hull would cost more than it saves). >= 0.
+  int hull_optimize_above = 64;
   /// m, Bullet's collision margin around each hull (Bullet's default is 0.04). Each hull vertex is
   /// first moved inward so that every face plane through it moves in by the margin: hull plus margin is
   /// the fragment again, and fragments that share a face start touching, not interpenetrating (which
@@ -46,7 +50,7 @@ struct PhysicsSettings {
   bool allow_sleeping = true;            ///< let Bullet deactivate bodies at rest (faster, still exact)
 };
 
-/// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, collision_margin >= 0,
+/// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, hull_optimize_above >= 0, collision_margin >= 0,
 /// friction >= 0, restitution in [0, 1]. The error names the field ("physics.fixed_step: ...").
 Status validate_physics_settings(const PhysicsSettings& s);
 
