@@ -256,6 +256,9 @@ void Run::make_colliders() {
   settings.gravity = c_.gravity;
   settings.ground = true;
   settings.ground_z = bounding_box(solid_.mesh).min.z();
+  // A collider needs the outline, not every vertex: hulls of more than 64 points are reduced (about 42
+  // support points) so that a piece of a scanned mesh costs Bullet what a piece of a box does.
+  settings.max_hull_vertices = 64;
   world_ = std::make_unique<PhysicsWorld>(settings);
   const double density = c_.material.density;
   static_body_.assign(r_.fragments.size(), -1);
