@@ -1,6 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
 #include <cholmod.h>
+#include <omp.h>
 
 #include <cassert>
 #include <limits>
@@ -51,6 +52,21 @@ cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& lower) {
   return a;
 }
 
+/// Runs CHOLMOD single-threaded while alive. Debian's CHOLMOD opens OpenMP teams of 4 threads for
+/// large supernodes; on 2 shared cores the wake-ups cost more than they gain (evaluating the 23 x 22
+/// wall: 6.0 ms with them, 4.2 ms without; the 71 x 71 wall: 156 ms against 82 ms). The bound is a
+/// process-wide OpenMP setting, restored on exit; nothing else in shatterbench uses OpenMP.
+class SingleThreaded {
+ public:
+  SingleThreaded() : saved_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
+  ~SingleThreaded() { omp_set_max_active_levels(saved_); }
+  SingleThreaded(const SingleThreaded&) = delete;
+  SingleThreaded& operator=(const SingleThreaded&) = delete;
+
+ private:
+  int saved_;
+};
+
 }  // namespace
 
 SupernodalCholesky::SupernodalCholesky() : state_(std::make_unique<State>()) {}
@@ -62,6 +78,7 @@ bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower) {
   State& s = *state_;
   if (s.factor) cholmod_free_factor(&s.factor, &s.common);
   cholmod_sparse a = view_lower(lower);
+  const SingleThreaded single;
   s.factor = cholmod_analyze(&a, &s.common);
   return s.factor != nullptr && s.common.status == CHOLMOD_OK;
 }
@@ -72,6 +89,7 @@ bool SupernodalCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   State& s = *state_;
   if (!s.factor) return false;
   cholmod_sparse a = view_lower(lower);
+  const SingleThreaded single;
   const int ok = cholmod_factorize(&a, s.factor, &s.common);
   return ok != 0 && s.common.status == CHOLMOD_OK && s.factor->minor == s.factor->n;
 }
@@ -87,6 +105,7 @@ Eigen::VectorXd SupernodalCholesky::solve(const Eigen::VectorXd& b) const {
   rhs.x = const_cast<double*>(b.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
+  const SingleThreaded single;
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, s.factor, &rhs, &s.common);
   Eigen::VectorXd out;
   if (x) {
