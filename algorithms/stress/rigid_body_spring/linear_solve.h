@@ -10,8 +10,8 @@ namespace shatter {
 
 /// Solver options. The direct solve is exact to round-off (the beam tests need 1e-9); it is chosen per
 /// decoupled block when CHOLMOD's analysis predicts at most `direct_max_flops` for the factorisation:
-/// on the 71 x 71 wall's in-plane half (14,910 unknowns) that is 1.4e8 flops, a 3D body of that size
-/// takes ~30 times more. See docs/stress.md, section 3.
+/// on the 71 x 71 wall's in-plane half (14,910 unknowns) that is 1.4e8 flops, ~60 ms here. Larger
+/// blocks (3D bodies fill far more) go to CG. See docs/stress.md, section 3.
 struct SpringSolverSettings {
   double direct_max_flops = 1e9;      ///< supernodal Cholesky up to this many factorisation flops per block, CG above
   int refinement_steps = 2;           ///< iterative-refinement steps against the full K after a direct solve
