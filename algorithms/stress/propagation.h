@@ -6,7 +6,7 @@
 /// applied at once, so no bond is privileged by the order of a loop). After a round only the
 /// components holding an end of a newly broken bond are re-solved; the model warm-starts them from the
 /// previous displacements (iterative solver) or refactorises them (direct solver: a break changes the
-/// matrix, and Eigen has no factorisation update). Components without an anchor are falling clusters
+/// matrix; see docs/stress.md, section 5, for why no factor is reused yet). Components without an anchor are falling clusters
 /// and are never solved.
 
 #include "algorithms/stress/stress_model.h"

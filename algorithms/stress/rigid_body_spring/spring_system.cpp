@@ -1,8 +1,6 @@
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 
 #include <Eigen/Geometry>
-#include <Eigen/IterativeLinearSolvers>
-#include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
@@ -159,35 +157,10 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
       f[6 * i + k] = loads[g];
       u[6 * i + k] = displacements[g];
     }
-  const double f_norm = f.norm();
-  if (n > 0 && f_norm > 0.0) {
+  if (n > 0 && f.squaredNorm() > 0.0) {
+    report = solve_linear(stiffness, f, u, settings);
     report.solves = 1;
-    if (n <= settings.direct_max_unknowns) {
-      // Small systems: a sparse LDL^T factorisation (AMD ordering) is exact and fastest here.
-      Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt(stiffness);
-      report.converged = ldlt.info() == Eigen::Success;
-      if (report.converged) {
-        u = ldlt.solve(f);
-        for (int step = 0; step < settings.refinement_steps; ++step) u += ldlt.solve(f - stiffness * u);
-      }
-    } else {
-      // Large systems: Jacobi-preconditioned CG, warm-started from the previous displacements. The
-      // assembled 6 x 6 blocks hold many exact zeros (a bond aligned with the axes couples few of its
-      // 36 entries); dropping them is exact and makes every product about 3 times cheaper.
-      stiffness.prune(0.0);
-      Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg(stiffness);
-      cg.setTolerance(settings.cg_tolerance);
-      cg.setMaxIterations(settings.cg_max_iterations);
-      if (!u.allFinite()) u.setZero();
-      u = cg.solveWithGuess(f, u);
-      report.iterations = static_cast<int>(cg.iterations());
-      report.converged = cg.info() == Eigen::Success;
-    }
-    if (!u.allFinite()) {
-      report.converged = false;
-      u.setZero();
-    }
-    report.residual = (f - stiffness * u).norm() / f_norm;
+    report.unknowns = n;
   } else {
     u.setZero();
   }

@@ -15,24 +15,13 @@
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/stress/material.h"
+#include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/stress_model.h"
 
 #include <span>
 #include <vector>
 
 namespace shatter {
-
-/// Solver options. Direct below the threshold: exact to round-off (the beam tests need 1e-9). Above it
-/// Jacobi-CG on the matrix with its exact zeros dropped: on the 23 x 22 block wall (2,898 unknowns)
-/// CG takes ~3 ms (156 iterations) against ~7-13 ms for SimplicialLDLT with AMD (182k entries in L);
-/// on the 71 x 71 wall (29,820 unknowns) ~110 ms (521 iterations) against 300-450 ms to factor
-/// (3.4M entries in L). See docs/stress.md.
-struct SpringSolverSettings {
-  int direct_max_unknowns = 1000;     ///< sparse LDLT up to this many unknowns, conjugate gradients above
-  int refinement_steps = 2;           ///< iterative-refinement steps after a direct solve
-  double cg_tolerance = 1e-10;        ///< relative residual |K u - f| / |f| at which CG stops
-  int cg_max_iterations = 20000;      ///< CG gives up (converged = false) after this many iterations
-};
 
 /// Internal forces of one bond, in its frame; the forces b receives from a are minus these.
 struct BondForces {

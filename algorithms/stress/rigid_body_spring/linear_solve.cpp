@@ -1,0 +1,140 @@
+#include "algorithms/stress/rigid_body_spring/linear_solve.h"
+
+#include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
+#include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
+
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+namespace shatter {
+
+namespace {
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+using Vector = Eigen::VectorXd;
+
+/// x(block)
+Vector gather(const Vector& x, const std::vector<int>& block) {
+  Vector out(static_cast<Eigen::Index>(block.size()));
+  for (std::size_t i = 0; i < block.size(); ++i) out[static_cast<Eigen::Index>(i)] = x[block[i]];
+  return out;
+}
+
+/// The old single-system path: Eigen's simplicial LDL^T with AMD, plus refinement. An independent
+/// reference for the tests.
+SolverReport solve_reference(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
+  SolverReport report;
+  Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower> ldlt(k);
+  report.converged = ldlt.info() == Eigen::Success;
+  if (report.converged) {
+    u = ldlt.solve(f);
+    for (int step = 0; step < settings.refinement_steps; ++step) u += ldlt.solve(f - k * u);
+  }
+  return report;
+}
+
+/// One decoupled block solved by Jacobi-CG, warm-started from `u`(block).
+SolverReport solve_block_cg(const SparseMatrix& k, const std::vector<int>& block, const std::vector<int>& position,
+                            const Vector& f, Vector& u, const SpringSolverSettings& settings) {
+  SolverReport report;
+  const SparseMatrix a = block_matrix(k, block, position, settings.decoupling_tolerance, false);
+  Eigen::ConjugateGradient<SparseMatrix, Eigen::Lower | Eigen::Upper> cg(a);
+  cg.setTolerance(settings.cg_tolerance);
+  cg.setMaxIterations(settings.cg_max_iterations);
+  const Vector x = cg.solveWithGuess(gather(f, block), gather(u, block));
+  for (std::size_t i = 0; i < block.size(); ++i) u[block[i]] = x[static_cast<Eigen::Index>(i)];
+  report.iterations = static_cast<int>(cg.iterations());
+  report.converged = cg.info() == Eigen::Success;
+  return report;
+}
+
+/// A decoupled block and how it is solved: its factor once analysed and cheap enough, else CG.
+struct Block {
+  std::vector<int> unknowns;                 // ascending global indices
+  std::optional<SupernodalCholesky> factor;  // set when factorised
+  bool analysed = false;                     // factorisation tried (factor empty: CG block)
+};
+
+/// Factorises `block` unless done already or too costly (then it stays a CG block).
+void try_factorize(const SparseMatrix& k, const std::vector<int>& position, const SpringSolverSettings& settings,
+                   Block& block) {
+  if (block.analysed) return;
+  block.analysed = true;
+  const SparseMatrix lower = block_matrix(k, block.unknowns, position, settings.decoupling_tolerance, true);
+  SupernodalCholesky cholesky;
+  if (cholesky.analyze(lower) && cholesky.factor_flops() <= settings.direct_max_flops && cholesky.factorize(lower))
+    block.factor = std::move(cholesky);
+}
+
+/// u(block) += the factor's solution for r(block).
+void add_direct_solution(const Block& block, const Vector& r, Vector& u) {
+  const Vector x = block.factor->solve(gather(r, block.unknowns));
+  for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] += x[static_cast<Eigen::Index>(i)];
+}
+
+/// Each loaded block is solved on its own (direct, or CG when its factorisation is too costly); a
+/// block with no load starts at u = 0, exact but for the dropped couplings. Refinement against the
+/// full K then corrects every direct block, factorising an unloaded one only if its residual is above
+/// the round-off of f itself (machine epsilon |f|): the in-plane half of a wall leaves ~1e-19 |f| on
+/// the out-of-plane half, never factorised, while an axis-aligned cantilever leaves 1e-14 |f| on its
+/// axial unknowns, whose correction keeps the axial force at ~1e-26 N rather than 1e-11 N.
+SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
+  SolverReport report;
+  std::vector<Block> blocks;
+  for (std::vector<int>& unknowns : decoupled_blocks(k, settings.decoupling_tolerance))
+    blocks.push_back(Block{std::move(unknowns), std::nullopt, false});
+  std::vector<int> position(static_cast<std::size_t>(k.cols()), -1);
+  for (const Block& block : blocks)
+    for (std::size_t i = 0; i < block.unknowns.size(); ++i)
+      position[static_cast<std::size_t>(block.unknowns[i])] = static_cast<int>(i);
+  const double negligible = std::numeric_limits<double>::epsilon() * f.norm();
+  for (Block& block : blocks) {
+    if (gather(f, block.unknowns).squaredNorm() == 0.0) {
+      for (const int i : block.unknowns) u[i] = 0.0;
+      continue;
+    }
+    try_factorize(k, position, settings, block);
+    if (block.factor) {
+      for (const int i : block.unknowns) u[i] = 0.0;
+      add_direct_solution(block, f, u);
+    } else {
+      const SolverReport r = solve_block_cg(k, block.unknowns, position, f, u, settings);
+      report.iterations += r.iterations;
+      report.converged = report.converged && r.converged;
+    }
+  }
+  for (int step = 0; step < settings.refinement_steps; ++step) {
+    const Vector r = f - k * u;
+    for (Block& block : blocks) {
+      if (gather(r, block.unknowns).norm() <= negligible) continue;
+      try_factorize(k, position, settings, block);
+      if (block.factor) add_direct_solution(block, r, u);
+    }
+  }
+  return report;
+}
+
+}  // namespace
+
+SolverReport solve_linear(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
+  if (!u.allFinite()) u.setZero();
+  SolverReport report;
+  if (settings.reference) {
+    report = solve_reference(k, f, u, settings);
+  } else {
+    report = solve_blocks(k, f, u, settings);
+  }
+  if (!u.allFinite()) {
+    report.converged = false;
+    u.setZero();
+  }
+  const double f_norm = f.norm();
+  report.residual = f_norm > 0.0 ? (f - k * u).norm() / f_norm : 0.0;
+  return report;
+}
+
+}  // namespace shatter

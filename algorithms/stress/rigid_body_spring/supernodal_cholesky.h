@@ -1,0 +1,42 @@
+#pragma once
+/// Supernodal sparse Cholesky K = L L^T of a symmetric positive definite matrix, by CHOLMOD.
+///
+/// Design note: Eigen's SimplicialLDLT factorises column by column at well below the machine's flop
+/// rate; CHOLMOD's supernodal factorisation groups columns with the same pattern into dense blocks
+/// handled by BLAS, 3-4 times faster on the same fill (docs/stress.md, section 3). The analysis (AMD
+/// ordering, symbolic factor) is done first and gives the factorisation's flop count, so the caller
+/// can choose an iterative solve instead when the fill would be too large (3D bodies) before paying
+/// for it. One object owns one CHOLMOD workspace and factor; it is movable, not copyable.
+
+#include <Eigen/SparseCore>
+
+#include <memory>
+
+namespace shatter {
+
+class SupernodalCholesky {
+ public:
+  SupernodalCholesky();
+  ~SupernodalCholesky();
+  SupernodalCholesky(SupernodalCholesky&&) noexcept;
+  SupernodalCholesky& operator=(SupernodalCholesky&&) noexcept;
+  SupernodalCholesky(const SupernodalCholesky&) = delete;
+  SupernodalCholesky& operator=(const SupernodalCholesky&) = delete;
+
+  /// Orders and analyses `lower` (the lower triangle of K, compressed columns, square). False if
+  /// CHOLMOD fails (out of memory, bad input).
+  bool analyze(const Eigen::SparseMatrix<double>& lower);
+  /// Floating-point operations the numeric factorisation of the analysed pattern takes.
+  [[nodiscard]] double factor_flops() const;
+  /// Factorises `lower`, whose pattern must be the analysed one. False if K is not positive definite
+  /// (to working precision) or CHOLMOD fails.
+  bool factorize(const Eigen::SparseMatrix<double>& lower);
+  /// Solves K x = b with the current factor.
+  [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+ private:
+  struct State;
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace shatter
