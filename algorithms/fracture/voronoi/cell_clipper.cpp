@@ -49,10 +49,10 @@ CellClipper::CellClipper(const Mesh& solid)
 }
 
 bool CellClipper::clip(std::span<const Plane> planes, const Aabb& box, const Aabb& bounds, Mesh& out) {
-  planes_ = planes;
   polytope_ = cell_polytope(box, planes);
   if (!polytope_.ok) return false;
-  face_of_plane_.assign(planes.size(), -1);
+  select_planes(planes, box);
+  face_of_plane_.assign(planes_.size(), -1);
   for (std::size_t f = 0; f < polytope_.faces.size(); ++f)
     if (polytope_.faces[f].label >= 0) face_of_plane_[static_cast<std::size_t>(polytope_.faces[f].label)] = static_cast<int>(f);
   if (++stamp_ == 0) {  // the stamps wrapped: forget every old one
@@ -65,32 +65,74 @@ bool CellClipper::clip(std::span<const Plane> planes, const Aabb& box, const Aab
   out_of_point_.clear();
   corner_refs_.assign(polytope_.corners.size(), -1);
   edge_crossings_.clear();
-  cap_edges_.resize(planes.size());
+  cap_edges_.resize(planes_.size());
   for (auto& edges : cap_edges_) edges.clear();
   edge_points_.clear();
   out_ = Mesh{};
   for (std::size_t f = 0; f < solid_->triangles.size(); ++f)
     if (overlaps(triangle_bounds_[f], bounds) && !clip_triangle(f)) return false;
-  for (std::size_t p = 0; p < planes.size(); ++p)
+  for (std::size_t p = 0; p < planes_.size(); ++p)
     if (!cap_edges_[p].empty() && face_of_plane_[p] < 0) return false;  // a cut with no face
   if (!walk_cell_edges() || !settle_corners() || !triangulate_caps()) return false;
   out = std::move(out_);
   return true;
 }
 
+void CellClipper::select_planes(std::span<const Plane> planes, const Aabb& box) {
+  // A plane without a face may still pass within round-off of the cell: keep those too, so that the
+  // exact side tests see every plane that could cut (a cut on a plane without a face is refused).
+  std::vector<std::int32_t> live;
+  for (const CellPolytope::Face& face : polytope_.faces) live.insert(live.end(), face.corners.begin(), face.corners.end());
+  std::vector<int> slot(planes.size(), -1);
+  for (const CellPolytope::Face& face : polytope_.faces)
+    if (face.label >= 0) slot[static_cast<std::size_t>(face.label)] = 0;
+  const double tolerance = 1e-9 * box.diagonal();
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (slot[p] == 0) continue;
+    const double slack = tolerance * planes[p].normal.norm();
+    for (const std::int32_t c : live)
+      if (planes[p].normal.dot(polytope_.corners[static_cast<std::size_t>(c)] - planes[p].point) > -slack) {
+        slot[p] = 0;
+        break;
+      }
+  }
+  planes_.clear();
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    if (slot[p] == 0) {
+      slot[p] = static_cast<int>(planes_.size());
+      planes_.push_back(planes[p]);
+    }
+  const auto relabel = [&](int label) { return label < 0 ? label : slot[static_cast<std::size_t>(label)]; };
+  for (CellPolytope::Face& face : polytope_.faces) {
+    face.label = relabel(face.label);
+    for (int& across : face.across) across = relabel(across);
+  }
+}
+
 int CellClipper::vertex_side(std::int32_t v, int plane) {
   const auto sv = static_cast<std::size_t>(v);
-  if (seen_[sv] != stamp_) {
-    seen_[sv] = stamp_;
-    side_offset_[sv] = static_cast<std::int32_t>(sides_.size());
-    sides_.resize(sides_.size() + planes_.size(), 2);
+  if (seen_[sv] != stamp_) first_sight(v);
+  return sides_[static_cast<std::size_t>(side_offset_[sv]) + static_cast<std::size_t>(plane)];
+}
+
+bool CellClipper::inside_all(std::int32_t v) {
+  const auto sv = static_cast<std::size_t>(v);
+  if (seen_[sv] != stamp_) first_sight(v);
+  return sides_[static_cast<std::size_t>(side_offset_[sv]) + planes_.size()] < 0;
+}
+
+void CellClipper::first_sight(std::int32_t v) {
+  // All sides at once, then one more entry: -1 when the vertex is strictly inside every plane.
+  const auto sv = static_cast<std::size_t>(v);
+  seen_[sv] = stamp_;
+  side_offset_[sv] = static_cast<std::int32_t>(sides_.size());
+  std::int8_t all = -1;
+  for (const Plane& p : planes_) {
+    const auto s = static_cast<std::int8_t>(plane_side(solid_->vertices[sv], p.point, p.normal));
+    sides_.push_back(s);
+    if (s >= 0) all = 1;
   }
-  std::int8_t& s = sides_[static_cast<std::size_t>(side_offset_[sv]) + static_cast<std::size_t>(plane)];
-  if (s == 2) {
-    const Plane& p = planes_[static_cast<std::size_t>(plane)];
-    s = static_cast<std::int8_t>(plane_side(solid_->vertices[sv], p.point, p.normal));
-  }
-  return s;
+  sides_.push_back(all);
 }
 
 int CellClipper::corner_side(const PolygonCorner& c, int plane) {
@@ -143,7 +185,8 @@ CellClipper::PolygonCorner CellClipper::crossing(const PolygonCorner& a, int sid
 bool CellClipper::clip_triangle(std::size_t f) {
   const Triangle& t = solid_->triangles[f];
   polygon_.assign({{t[0], -1}, {t[1], -1}, {t[2], -1}});
-  for (int m = 0; m < static_cast<int>(planes_.size()); ++m) {
+  const bool interior = inside_all(t[0]) && inside_all(t[1]) && inside_all(t[2]);
+  for (int m = 0; !interior && m < static_cast<int>(planes_.size()); ++m) {
     const int s0 = vertex_side(t[0], m);
     const int s1 = vertex_side(t[1], m);
     const int s2 = vertex_side(t[2], m);

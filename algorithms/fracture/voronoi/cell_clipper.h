@@ -68,6 +68,9 @@ class CellClipper {
   bool walk_cell_edges();
   bool settle_corners();
   bool triangulate_caps();
+  void select_planes(std::span<const Plane> planes, const Aabb& box);
+  void first_sight(std::int32_t v);
+  bool inside_all(std::int32_t v);
   int vertex_side(std::int32_t v, int plane);
   int corner_side(const PolygonCorner& c, int plane);
   PolygonCorner crossing(const PolygonCorner& a, int side_a, const PolygonCorner& b, int plane);
@@ -84,12 +87,12 @@ class CellClipper {
   std::unique_ptr<PointInMesh> inside_;  // built on first need
 
   // Per cell. A "ref" names a vertex of the solid (0..V-1) or a made point (V+k).
-  std::span<const Plane> planes_;
+  std::vector<Plane> planes_;                      // the planes that may cut the cell, in order
   CellPolytope polytope_;
   std::vector<int> face_of_plane_;                 // plane -> face index, -1 without a face
   std::vector<std::uint32_t> seen_;                // per solid vertex: stamp of the cell its sides are for
   std::vector<std::int32_t> side_offset_;          // per solid vertex: offset of its sides in sides_
-  std::vector<std::int8_t> sides_;                 // exact sides of solid vertices, #planes each
+  std::vector<std::int8_t> sides_;                 // exact sides of solid vertices, #planes + 1 each
   std::uint32_t stamp_ = 0;
   std::vector<Vec3> points_;                       // made points
   std::vector<std::int32_t> corner_refs_;          // polytope corner -> ref, -1 until used
