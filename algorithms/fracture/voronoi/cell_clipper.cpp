@@ -48,9 +48,10 @@ CellClipper::CellClipper(const Mesh& solid)
   out_of_vertex_.assign(solid.vertices.size(), 0);
 }
 
-bool CellClipper::clip(std::span<const Plane> planes, const Aabb& box, const Aabb& bounds, Mesh& out) {
-  polytope_ = cell_polytope(box, planes);
-  if (!polytope_.ok) return false;
+bool CellClipper::clip(std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box,
+                       const Aabb& bounds, Mesh& out) {
+  if (!polytope.ok) return false;
+  polytope_ = polytope;
   select_planes(planes, box);
   face_of_plane_.assign(planes_.size(), -1);
   for (std::size_t f = 0; f < polytope_.faces.size(); ++f)

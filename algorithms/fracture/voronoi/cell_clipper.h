@@ -42,10 +42,12 @@ class CellClipper {
   explicit CellClipper(const Mesh& solid);
 
   /// Writes into `out` the part of the solid on the negative side of every plane of `planes`
-  /// (the cell; #P planes, any lengths), which lies in `bounds` (m); `box` (m) holds the solid
-  /// strictly inside and bounds the cell too. The part may be empty or have several connected
-  /// parts. False (and `out` untouched) when the cell must be cut by the exact sequential path.
-  bool clip(std::span<const Plane> planes, const Aabb& box, const Aabb& bounds, Mesh& out);
+  /// (the cell; #P planes, any lengths), which lies in `bounds` (m). `polytope` is the cell clipped
+  /// to a box `box` (m) that holds the solid strictly inside, face labels indexing `planes`. The
+  /// part may be empty or have several connected parts. False (and `out` untouched) when the cell
+  /// must be cut by the exact sequential path.
+  bool clip(std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box, const Aabb& bounds,
+            Mesh& out);
 
  private:
   /// One corner of a triangle clipped so far: a point ref and the plane of the edge leaving it

@@ -4,6 +4,7 @@
 #include <array>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace shatter {
 namespace {
@@ -16,10 +17,13 @@ CornerKey corner_key(int a, int b, int c) {
   return k;
 }
 
-/// The box as six outward counter-clockwise quads. Face labels: -1 x-min, -2 x-max, -3 y-min,
-/// -4 y-max, -5 z-min, -6 z-max. Corner k has x from bit 0, y from bit 1, z from bit 2.
+}  // namespace
+
+// The box as six outward counter-clockwise quads. Face labels: -1 x-min, -2 x-max, -3 y-min,
+// -4 y-max, -5 z-min, -6 z-max. Corner k has x from bit 0, y from bit 1, z from bit 2.
 CellPolytope box_polytope(const Aabb& b) {
   CellPolytope p;
+  p.ok = true;
   for (int k = 0; k < 8; ++k)
     p.corners.emplace_back((k & 1) ? b.max.x() : b.min.x(), (k & 2) ? b.max.y() : b.min.y(),
                            (k & 4) ? b.max.z() : b.min.z());
@@ -44,27 +48,36 @@ CellPolytope box_polytope(const Aabb& b) {
   return p;
 }
 
+namespace {
+
 /// Clips `p` by plane `label` (negative side kept). False when a corner lies exactly on the plane.
-bool clip(CellPolytope& p, const Plane& plane, int label, std::map<CornerKey, std::int32_t>& made) {
+bool clip(CellPolytope& p, const Plane& plane, int label) {
+  // Corners made by this clip, by the two faces of the edge they cut: the edge is met from both.
+  std::vector<std::pair<CornerKey, std::int32_t>> made;
   std::vector<double> d(p.corners.size());
   bool any_above = false;
-  for (std::size_t c = 0; c < p.corners.size(); ++c) {
-    d[c] = plane.normal.dot(p.corners[c] - plane.point);
-    if (d[c] == 0.0) return false;
-    any_above |= d[c] > 0;
-  }
+  // Only the corners of live faces matter; corners cut off earlier keep a dummy distance.
+  std::fill(d.begin(), d.end(), -1.0);
+  for (const CellPolytope::Face& face : p.faces)
+    for (const std::int32_t c : face.corners) {
+      const auto sc = static_cast<std::size_t>(c);
+      d[sc] = plane.normal.dot(p.corners[sc] - plane.point);
+      if (d[sc] == 0.0) return false;
+      any_above |= d[sc] > 0;
+    }
   if (!any_above) return true;
   const auto crossing = [&](int fa, int fb, std::int32_t a, std::int32_t b) {
-    const auto [it, inserted] = made.try_emplace(corner_key(fa, fb, label), 0);
-    if (inserted) {
-      const double da = d[static_cast<std::size_t>(a)];
-      const double db = d[static_cast<std::size_t>(b)];
-      const Vec3& pa = p.corners[static_cast<std::size_t>(a)];
-      const Vec3& pb = p.corners[static_cast<std::size_t>(b)];
-      it->second = static_cast<std::int32_t>(p.corners.size());
-      p.corners.push_back(pa + (pb - pa) * (da / (da - db)));
-    }
-    return it->second;
+    const CornerKey key = corner_key(fa, fb, label);
+    for (const auto& [k, corner] : made)
+      if (k == key) return corner;
+    const double da = d[static_cast<std::size_t>(a)];
+    const double db = d[static_cast<std::size_t>(b)];
+    const Vec3& pa = p.corners[static_cast<std::size_t>(a)];
+    const Vec3& pb = p.corners[static_cast<std::size_t>(b)];
+    const auto corner = static_cast<std::int32_t>(p.corners.size());
+    p.corners.push_back(pa + (pb - pa) * (da / (da - db)));
+    made.emplace_back(key, corner);
+    return corner;
   };
   std::vector<CellPolytope::Face> kept;
   std::map<std::int32_t, std::pair<std::int32_t, int>> new_edges;  // on the new face: start -> (end, across)
@@ -113,12 +126,22 @@ bool clip(CellPolytope& p, const Plane& plane, int label, std::map<CornerKey, st
 
 }  // namespace
 
+void clip_polytope(CellPolytope& polytope, const Plane& plane, int label) {
+  if (!polytope.ok) return;
+  polytope.ok = clip(polytope, plane, label) && !polytope.faces.empty();
+}
+
+double max_corner_distance_squared(const CellPolytope& polytope, const Vec3& from) {
+  double r2 = 0.0;
+  for (const CellPolytope::Face& face : polytope.faces)
+    for (const std::int32_t c : face.corners)
+      r2 = std::max(r2, (polytope.corners[static_cast<std::size_t>(c)] - from).squaredNorm());
+  return r2;
+}
+
 CellPolytope cell_polytope(const Aabb& box, std::span<const Plane> planes) {
   CellPolytope p = box_polytope(box);
-  std::map<CornerKey, std::int32_t> made;
-  for (std::size_t m = 0; m < planes.size(); ++m)
-    if (!clip(p, planes[m], static_cast<int>(m), made)) return p;
-  p.ok = !p.faces.empty();
+  for (std::size_t m = 0; m < planes.size(); ++m) clip_polytope(p, planes[m], static_cast<int>(m));
   return p;
 }
 

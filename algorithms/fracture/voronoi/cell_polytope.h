@@ -33,8 +33,17 @@ struct CellPolytope {
   bool ok = false;                      ///< false when a corner fell exactly on a later plane
 };
 
-/// The box `box` (m) clipped to the negative sides of `planes`, in order. Planes that miss the
-/// polytope leave no face.
+/// The box `box` (m) as a polytope (ok).
+CellPolytope box_polytope(const Aabb& box);
+
+/// Clips `polytope` to the negative side of `plane`, whose face gets `label` (>= 0); a plane that
+/// misses the polytope leaves no face. Sets `ok` to false when a corner lies exactly on the plane.
+void clip_polytope(CellPolytope& polytope, const Plane& plane, int label);
+
+/// Largest squared distance from `from` to a corner of the polytope's faces, m^2.
+double max_corner_distance_squared(const CellPolytope& polytope, const Vec3& from);
+
+/// The box `box` (m) clipped to the negative sides of `planes`, in order (labels: their indices).
 CellPolytope cell_polytope(const Aabb& box, std::span<const Plane> planes);
 
 }  // namespace shatter

@@ -262,7 +262,7 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& 
     const VoronoiCell& c = cells[static_cast<std::size_t>(i)];
     planes.clear();
     for (const std::int32_t j : c.neighbours) planes.push_back(bisector_plane(sites, i, j));
-    if (!clipper.clip(planes, box, c.bounds, cell)) {
+    if (!clipper.clip(planes, c.polytope, box, c.bounds, cell)) {
       sequential.push_back(i);
       continue;
     }
