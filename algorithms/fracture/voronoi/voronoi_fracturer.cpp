@@ -1,4 +1,7 @@
-// Design note: the cost of clipping with MeshSlicer is the size of the piece it is given, whether the
+// Design note: each cell is first cut by CellClipper (cell_clipper.h), one pass over the triangles
+// near the cell. The cells it cannot decide go to the sequential path below (CellCutter).
+//
+// The sequential path: the cost of clipping with MeshSlicer is the size of the piece it is given, whether the
 // plane cuts off much or little. Cutting every cell out of the whole solid would cost #cells whole-
 // mesh passes. Only bisector planes may leave faces on a cell, but any plane that keeps a cell whole
 // on one side may shrink the piece the cell is cut from: its cap lies outside the cell and the
