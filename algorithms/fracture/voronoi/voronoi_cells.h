@@ -2,13 +2,15 @@
 /// The Voronoi diagram of the sites restricted to a box, as approximate convex cells: which bisector
 /// planes to try for each cell, in which order, and how far each cell reaches.
 ///
-/// Design note: the cells are computed in plain double (Sutherland-Hodgman clipping of a box by the
-/// bisector planes), so they are only used for decisions that stay valid under a margin: the bounding
-/// box of a cell, inflated by `margin`, certainly holds the exact cell. The exact cutting of the mesh
-/// is done by MeshSlicer on the bisector planes themselves (bisector_plane), never on these polygons.
+/// Design note: the cells are computed in plain double (the box clipped by the bisector planes,
+/// cell_polytope.h), so they are only used for decisions that stay valid under a margin: the bounding
+/// box of a cell, inflated by `margin`, certainly holds the exact cell, and the polytope's faces say
+/// which bisector bounds which face. The exact side tests on the mesh are done on the bisector planes
+/// themselves (bisector_plane), never on these polygons.
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
+#include "algorithms/fracture/voronoi/cell_polytope.h"
 
 #include <cstdint>
 #include <span>
@@ -27,6 +29,9 @@ struct VoronoiCell {
   /// the cell inside the box: every face of the cell lies on the bisector of one of them.
   std::vector<std::int32_t> neighbours;
   Aabb bounds;                           ///< box of the cell clipped to the input box, inflated, m
+  /// The cell clipped to the input box, face labels indexing `neighbours` (not ok when a corner fell
+  /// exactly on a plane: then `bounds` is the whole box).
+  CellPolytope polytope;
 };
 
 /// Cells of `sites` (#S distinct finite points, m) clipped to `box` (m), each box and reach inflated

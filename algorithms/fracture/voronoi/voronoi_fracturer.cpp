@@ -1,4 +1,7 @@
-// Design note: the cost of clipping with MeshSlicer is the size of the piece it is given, whether the
+// Design note: each cell is first cut by CellClipper (cell_clipper.h), one pass over the triangles
+// near the cell. The cells it cannot decide go to the sequential path below (CellCutter).
+//
+// The sequential path: the cost of clipping with MeshSlicer is the size of the piece it is given, whether the
 // plane cuts off much or little. Cutting every cell out of the whole solid would cost #cells whole-
 // mesh passes. Only bisector planes may leave faces on a cell, but any plane that keeps a cell whole
 // on one side may shrink the piece the cell is cut from: its cap lies outside the cell and the
@@ -18,6 +21,7 @@
 #include "algorithms/core/mesh_components.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
+#include "algorithms/fracture/voronoi/cell_clipper.h"
 #include "algorithms/fracture/voronoi/voronoi_cells.h"
 
 #include <algorithm>
@@ -33,9 +37,10 @@ namespace {
 class CellCutter {
  public:
   /// `tolerance` (m) is far above the round-off of a crossing point and far below any cell.
-  CellCutter(std::span<const Vec3> sites, std::vector<VoronoiCell> cells, int leaf_cells, double tolerance)
-      : sites_(sites), cells_(std::move(cells)), leaf_cells_(leaf_cells), tolerance_(tolerance),
-        parts_(sites.size()) {}
+  /// Parts of cell i go to `parts[i]`.
+  CellCutter(std::span<const Vec3> sites, const std::vector<VoronoiCell>& cells, int leaf_cells, double tolerance,
+             std::vector<std::vector<Fragment>>& parts)
+      : sites_(sites), cells_(cells), leaf_cells_(leaf_cells), tolerance_(tolerance), parts_(parts) {}
 
   /// Cuts the cells `ids` out of `piece` (a closed mesh that holds all of them inside the solid).
   void cut(const Mesh& piece, std::span<std::int32_t> ids) {
@@ -69,14 +74,6 @@ class CellCutter {
     normal[axis] = 1.0;
     cut_side(piece, piece_box, axis, lower_max, normal, lower);
     cut_side(piece, piece_box, axis, upper_min, -normal, upper);
-  }
-
-  /// The fragments in site order.
-  std::vector<Fragment> take_fragments() {
-    std::vector<Fragment> out;
-    for (auto& parts : parts_)
-      for (Fragment& f : parts) out.push_back(std::move(f));
-    return out;
   }
 
  private:
@@ -203,10 +200,10 @@ class CellCutter {
   }
 
   std::span<const Vec3> sites_;
-  std::vector<VoronoiCell> cells_;
+  const std::vector<VoronoiCell>& cells_;
   int leaf_cells_;
   double tolerance_;
-  std::vector<std::vector<Fragment>> parts_;
+  std::vector<std::vector<Fragment>>& parts_;
   MeshSlicer slicer_;
   std::vector<Plane> candidates_;  // bisectors of the cell being cut that may still cut its piece
   int failed_cuts_ = 0;
@@ -256,11 +253,37 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& 
   box.min.array() -= 4 * margin;
   box.max.array() += 4 * margin;
   for (const Vec3& s : sites) box.extend(s);  // every site inside the box its cell is clipped to
-  CellCutter cutter(sites, voronoi_cells(sites, box, 64 * margin), settings_.leaf_cells, margin);
-  std::vector<std::int32_t> ids(sites.size());
-  std::iota(ids.begin(), ids.end(), 0);
-  cutter.cut(solid, ids);
-  return cutter.take_fragments();
+  const std::vector<VoronoiCell> cells = voronoi_cells(sites, box, 64 * margin);
+  std::vector<std::vector<Fragment>> parts(sites.size());
+  // Each cell in one pass over the triangles near it; the few the clipper cannot decide are cut by
+  // the sequential slicer, from a site tree over just those cells.
+  std::vector<std::int32_t> sequential;
+  CellClipper clipper(solid);
+  std::vector<Plane> planes;
+  Mesh cell;
+  for (int i = 0; i < static_cast<int>(sites.size()); ++i) {
+    const VoronoiCell& c = cells[static_cast<std::size_t>(i)];
+    planes.clear();
+    for (const std::int32_t j : c.neighbours) planes.push_back(bisector_plane(sites, i, j));
+    if (!clipper.clip(planes, c.polytope, box, c.bounds, cell)) {
+      sequential.push_back(i);
+      continue;
+    }
+    if (cell.empty()) continue;
+    for (Mesh& part : connected_components(std::move(cell))) {
+      const MassProperties mass = mass_properties(part);
+      parts[static_cast<std::size_t>(i)].push_back({std::move(part), mass});
+    }
+    cell = Mesh{};
+  }
+  if (!sequential.empty()) {
+    CellCutter cutter(sites, cells, settings_.leaf_cells, margin, parts);
+    cutter.cut(solid, sequential);
+  }
+  std::vector<Fragment> out;
+  for (auto& cell_parts : parts)
+    for (Fragment& f : cell_parts) out.push_back(std::move(f));
+  return out;
 }
 
 void register_voronoi(FracturerRegistry& registry) {

@@ -1,0 +1,433 @@
+#include "algorithms/fracture/voronoi/cell_clipper.h"
+
+#include "algorithms/core/predicates.h"
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace shatter {
+namespace {
+
+std::uint64_t pair_key(std::int32_t a, std::int32_t b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
+bool overlaps(const Aabb& a, const Aabb& b) {
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
+/// The axis-aligned projection in which `normal` points towards the viewer (as in MeshSlicer).
+struct Projection {
+  int u = 0;
+  int v = 1;
+  explicit Projection(const Vec3& normal) {
+    int k = 0;
+    if (std::abs(normal.y()) > std::abs(normal[k])) k = 1;
+    if (std::abs(normal.z()) > std::abs(normal[k])) k = 2;
+    u = (k + 1) % 3;
+    v = (k + 2) % 3;
+    if (normal[k] < 0) std::swap(u, v);
+  }
+  [[nodiscard]] Vec2 operator()(const Vec3& p) const { return {p[u], p[v]}; }
+};
+
+}  // namespace
+
+CellClipper::CellClipper(const Mesh& solid)
+    : solid_(&solid), vertex_count_(static_cast<std::int32_t>(solid.vertices.size())) {
+  triangle_bounds_.reserve(solid.triangles.size());
+  for (const Triangle& t : solid.triangles) {
+    Aabb b;
+    for (const std::int32_t v : t) b.extend(solid.vertices[static_cast<std::size_t>(v)]);
+    triangle_bounds_.push_back(b);
+  }
+  seen_.assign(solid.vertices.size(), 0);
+  side_offset_.assign(solid.vertices.size(), 0);
+  seen_out_.assign(solid.vertices.size(), 0);
+  out_of_vertex_.assign(solid.vertices.size(), 0);
+}
+
+bool CellClipper::clip(std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box,
+                       const Aabb& bounds, Mesh& out) {
+  if (!polytope.ok) return false;
+  polytope_ = polytope;
+  select_planes(planes, box);
+  face_of_plane_.assign(planes_.size(), -1);
+  for (std::size_t f = 0; f < polytope_.faces.size(); ++f)
+    if (polytope_.faces[f].label >= 0) face_of_plane_[static_cast<std::size_t>(polytope_.faces[f].label)] = static_cast<int>(f);
+  if (++stamp_ == 0) {  // the stamps wrapped: forget every old one
+    std::fill(seen_.begin(), seen_.end(), 0);
+    std::fill(seen_out_.begin(), seen_out_.end(), 0);
+    stamp_ = 1;
+  }
+  sides_.clear();
+  points_.clear();
+  out_of_point_.clear();
+  corner_refs_.assign(polytope_.corners.size(), -1);
+  edge_crossings_.clear();
+  cap_edges_.resize(planes_.size());
+  for (auto& edges : cap_edges_) edges.clear();
+  edge_points_.clear();
+  out_ = Mesh{};
+  for (std::size_t f = 0; f < solid_->triangles.size(); ++f)
+    if (overlaps(triangle_bounds_[f], bounds) && !clip_triangle(f)) return false;
+  for (std::size_t p = 0; p < planes_.size(); ++p)
+    if (!cap_edges_[p].empty() && face_of_plane_[p] < 0) return false;  // a cut with no face
+  if (!walk_cell_edges() || !settle_corners() || !triangulate_caps()) return false;
+  out = std::move(out_);
+  return true;
+}
+
+void CellClipper::select_planes(std::span<const Plane> planes, const Aabb& box) {
+  // A plane without a face may still pass within round-off of the cell: keep those too, so that the
+  // exact side tests see every plane that could cut (a cut on a plane without a face is refused).
+  std::vector<std::int32_t> live;
+  for (const CellPolytope::Face& face : polytope_.faces) live.insert(live.end(), face.corners.begin(), face.corners.end());
+  std::vector<int> slot(planes.size(), -1);
+  for (const CellPolytope::Face& face : polytope_.faces)
+    if (face.label >= 0) slot[static_cast<std::size_t>(face.label)] = 0;
+  const double tolerance = 1e-9 * box.diagonal();
+  for (std::size_t p = 0; p < planes.size(); ++p) {
+    if (slot[p] == 0) continue;
+    const double slack = tolerance * planes[p].normal.norm();
+    for (const std::int32_t c : live)
+      if (planes[p].normal.dot(polytope_.corners[static_cast<std::size_t>(c)] - planes[p].point) > -slack) {
+        slot[p] = 0;
+        break;
+      }
+  }
+  planes_.clear();
+  for (std::size_t p = 0; p < planes.size(); ++p)
+    if (slot[p] == 0) {
+      slot[p] = static_cast<int>(planes_.size());
+      planes_.push_back(planes[p]);
+    }
+  const auto relabel = [&](int label) { return label < 0 ? label : slot[static_cast<std::size_t>(label)]; };
+  for (CellPolytope::Face& face : polytope_.faces) {
+    face.label = relabel(face.label);
+    for (int& across : face.across) across = relabel(across);
+  }
+}
+
+int CellClipper::vertex_side(std::int32_t v, int plane) {
+  const auto sv = static_cast<std::size_t>(v);
+  if (seen_[sv] != stamp_) first_sight(v);
+  return sides_[static_cast<std::size_t>(side_offset_[sv]) + static_cast<std::size_t>(plane)];
+}
+
+bool CellClipper::inside_all(std::int32_t v) {
+  const auto sv = static_cast<std::size_t>(v);
+  if (seen_[sv] != stamp_) first_sight(v);
+  return sides_[static_cast<std::size_t>(side_offset_[sv]) + planes_.size()] < 0;
+}
+
+void CellClipper::first_sight(std::int32_t v) {
+  // All sides at once, then one more entry: -1 when the vertex is strictly inside every plane.
+  const auto sv = static_cast<std::size_t>(v);
+  seen_[sv] = stamp_;
+  side_offset_[sv] = static_cast<std::int32_t>(sides_.size());
+  std::int8_t all = -1;
+  for (const Plane& p : planes_) {
+    const auto s = static_cast<std::int8_t>(plane_side(solid_->vertices[sv], p.point, p.normal));
+    sides_.push_back(s);
+    if (s >= 0) all = 1;
+  }
+  sides_.push_back(all);
+}
+
+int CellClipper::corner_side(const PolygonCorner& c, int plane) {
+  if (c.ref < vertex_count_) return vertex_side(c.ref, plane);
+  if (c.edge_u >= 0) {
+    // A point on a solid edge whose ends are strictly on one side is on that side: decided by the
+    // edge alone, so the two triangles of the edge agree even when rounding put it a hair across.
+    const int su = vertex_side(c.edge_u, plane);
+    const int sw = vertex_side(c.edge_w, plane);
+    if (su == sw && su != 0) return su;
+  }
+  const Plane& p = planes_[static_cast<std::size_t>(plane)];
+  return plane_side(position(c.ref), p.point, p.normal);
+}
+
+CellClipper::PolygonCorner CellClipper::crossing(const PolygonCorner& a, int side_a, const PolygonCorner& b,
+                                                 int plane) {
+  const bool on_solid_edge = a.plane < 0;  // the piece a -> b of one of the triangle's own edges
+  PolygonCorner x{-1, -1, -1, -1};
+  if (on_solid_edge) {
+    // The solid edge under a -> b: from whichever end was made on it, else the two solid vertices.
+    const PolygonCorner& made = a.edge_u >= 0 ? a : b;
+    x.edge_u = made.edge_u >= 0 ? made.edge_u : a.ref;
+    x.edge_w = made.edge_u >= 0 ? made.edge_w : b.ref;
+    if (x.edge_u > x.edge_w) std::swap(x.edge_u, x.edge_w);
+    const CrossingKey key{pair_key(std::min(a.ref, b.ref), std::max(a.ref, b.ref)), plane};
+    const auto found = edge_crossings_.find(key);
+    if (found != edge_crossings_.end()) {
+      x.ref = found->second;
+      return x;
+    }
+  }
+  // Interpolate from the end beyond the plane, so that either order of a and b gives the same point.
+  const PolygonCorner& pos = side_a > 0 ? a : b;
+  const PolygonCorner& neg = side_a > 0 ? b : a;
+  const Plane& p = planes_[static_cast<std::size_t>(plane)];
+  const Vec3 pp = position(pos.ref);
+  const Vec3 pm = position(neg.ref);
+  const double dp = p.normal.dot(pp - p.point);
+  const double dm = p.normal.dot(pm - p.point);
+  const double denom = dp - dm;
+  const double t = std::clamp(denom > 0 ? dp / denom : 0.5, 0.0, 1.0);
+  x.ref = vertex_count_ + static_cast<std::int32_t>(points_.size());
+  points_.push_back(pp + t * (pm - pp));
+  out_of_point_.push_back(-1);
+  if (on_solid_edge) edge_crossings_.emplace(CrossingKey{pair_key(std::min(a.ref, b.ref), std::max(a.ref, b.ref)), plane}, x.ref);
+  return x;
+}
+
+bool CellClipper::clip_triangle(std::size_t f) {
+  const Triangle& t = solid_->triangles[f];
+  polygon_.assign({{t[0], -1}, {t[1], -1}, {t[2], -1}});
+  const bool interior = inside_all(t[0]) && inside_all(t[1]) && inside_all(t[2]);
+  for (int m = 0; !interior && m < static_cast<int>(planes_.size()); ++m) {
+    const int s0 = vertex_side(t[0], m);
+    const int s1 = vertex_side(t[1], m);
+    const int s2 = vertex_side(t[2], m);
+    if (s0 < 0 && s1 < 0 && s2 < 0) continue;  // the whole triangle is inside this plane
+    if (s0 == 0 || s1 == 0 || s2 == 0) return false;
+    if (s0 > 0 && s1 > 0 && s2 > 0) return true;  // wholly outside the cell
+    clipped_.clear();
+    const std::size_t n = polygon_.size();
+    int first_side = 0;
+    int side_a = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const PolygonCorner& a = polygon_[k];
+      const PolygonCorner& b = polygon_[(k + 1) % n];
+      if (k == 0) first_side = side_a = corner_side(a, m);
+      const int side_b = k + 1 == n ? first_side : corner_side(b, m);
+      if (side_a == 0 || side_b == 0) return false;
+      if (side_a < 0) clipped_.push_back(a);
+      if (side_a != side_b) {
+        PolygonCorner x = crossing(a, side_a, b, m);
+        x.plane = side_a < 0 ? m : a.plane;
+        clipped_.push_back(x);
+      }
+      side_a = side_b;
+    }
+    if (clipped_.size() < 3) return true;
+    std::swap(polygon_, clipped_);
+  }
+  const std::size_t n = polygon_.size();
+  const FaceTag tag = solid_->tags[f];
+  for (std::size_t k = 1; k + 1 < n; ++k)
+    out_.add_triangle(out_index(polygon_[0].ref), out_index(polygon_[k].ref), out_index(polygon_[k + 1].ref), tag);
+  for (std::size_t k = 0; k < n; ++k) {
+    const PolygonCorner& a = polygon_[k];
+    const PolygonCorner& b = polygon_[(k + 1) % n];
+    if (a.plane >= 0) cap_edges_[static_cast<std::size_t>(a.plane)].push_back({b.ref, a.ref});
+    const int before = polygon_[(k + n - 1) % n].plane;
+    if (before >= 0 && a.plane >= 0) {
+      // The cell edge between the two planes passes through the triangle here.
+      edge_points_.emplace_back(pair_key(std::min(before, a.plane), std::max(before, a.plane)),
+                                EdgePoint{a.ref, before, a.plane});
+    }
+  }
+  return true;
+}
+
+bool CellClipper::walk_cell_edges() {
+  corner_inside_.assign(polytope_.corners.size(), -1);
+  free_edges_.clear();
+  const auto settle = [&](std::int32_t corner, bool inside) {
+    std::int8_t& s = corner_inside_[static_cast<std::size_t>(corner)];
+    if (s >= 0 && s != static_cast<std::int8_t>(inside)) return false;
+    s = static_cast<std::int8_t>(inside);
+    return true;
+  };
+  // Points along each cell edge, sorted by the edge (smaller plane first) and then along the edge's
+  // direction on the smaller plane's face: normal(a) x normal(b).
+  std::vector<std::pair<double, std::size_t>> order;
+  std::sort(edge_points_.begin(), edge_points_.end(),
+            [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::size_t matched = 0;
+  for (const CellPolytope::Face& face : polytope_.faces) {
+    const int a = face.label;
+    const std::size_t n = face.corners.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const int b = face.across[k];
+      const std::int32_t s = face.corners[k];
+      const std::int32_t e = face.corners[(k + 1) % n];
+      if (a > b) continue;  // each edge once, from the face with the smaller label
+      if (a < 0 || b < 0) {   // the box lies outside the solid: no triangle meets these edges
+        free_edges_.emplace_back(s, e);
+        continue;
+      }
+      const std::uint64_t key = pair_key(a, b);
+      const auto lo = std::lower_bound(edge_points_.begin(), edge_points_.end(), key,
+                                       [](const auto& x, std::uint64_t k2) { return x.first < k2; });
+      auto hi = lo;
+      while (hi != edge_points_.end() && hi->first == key) ++hi;
+      if (lo == hi) {
+        free_edges_.emplace_back(s, e);
+        continue;
+      }
+      matched += static_cast<std::size_t>(hi - lo);
+      const Vec3 direction = planes_[static_cast<std::size_t>(a)].normal.cross(planes_[static_cast<std::size_t>(b)].normal);
+      order.clear();
+      for (auto it = lo; it != hi; ++it)
+        order.emplace_back(direction.dot(position(it->second.ref)), static_cast<std::size_t>(it - edge_points_.begin()));
+      std::sort(order.begin(), order.end());
+      const auto emit = [&](std::int32_t p, std::int32_t q) {
+        cap_edges_[static_cast<std::size_t>(a)].push_back({p, q});
+        cap_edges_[static_cast<std::size_t>(b)].push_back({q, p});
+      };
+      // An inside stretch of the edge starts where a cap edge of face a ends, and ends where one starts.
+      bool inside = edge_points_[order.front().second].second.out_of == a;
+      if (!settle(s, inside)) return false;
+      std::int32_t start = inside ? corner_ref(s) : -1;
+      for (const auto& [t, index] : order) {
+        const EdgePoint& x = edge_points_[index].second;
+        if (x.into == a) {
+          if (inside) return false;
+          inside = true;
+          start = x.ref;
+        } else {
+          if (!inside) return false;
+          emit(start, x.ref);
+          inside = false;
+        }
+      }
+      if (inside) emit(start, corner_ref(e));
+      if (!settle(e, inside)) return false;
+    }
+  }
+  return matched == edge_points_.size();  // every point lies on an edge of the polytope
+}
+
+bool CellClipper::settle_corners() {
+  // Edges that no triangle meets have the same state at both ends: spread the known states.
+  bool changed = true;
+  bool any_known = std::any_of(corner_inside_.begin(), corner_inside_.end(), [](std::int8_t s) { return s >= 0; });
+  if (!any_known) {
+    // No cell edge meets the surface: the cell is wholly inside or wholly outside the solid.
+    bool on_box = false;
+    for (const CellPolytope::Face& face : polytope_.faces) on_box |= face.label < 0;
+    bool inside = false;
+    if (!on_box) {
+      if (!inside_) inside_ = std::make_unique<PointInMesh>(*solid_);
+      const InsideAnswer answer = (*inside_)(polytope_.corners[static_cast<std::size_t>(polytope_.faces.front().corners.front())]);
+      if (answer == InsideAnswer::undecided) return false;
+      inside = answer == InsideAnswer::inside;
+    }
+    std::fill(corner_inside_.begin(), corner_inside_.end(), static_cast<std::int8_t>(inside));
+  }
+  while (changed) {
+    changed = false;
+    for (const auto& [s, e] : free_edges_) {
+      std::int8_t& a = corner_inside_[static_cast<std::size_t>(s)];
+      std::int8_t& b = corner_inside_[static_cast<std::size_t>(e)];
+      if (a >= 0 && b >= 0 && a != b) return false;
+      if (a >= 0 && b < 0) b = a, changed = true;
+      if (b >= 0 && a < 0) a = b, changed = true;
+    }
+  }
+  for (const CellPolytope::Face& face : polytope_.faces) {
+    const std::size_t n = face.corners.size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::int32_t s = face.corners[k];
+      const std::int8_t state = corner_inside_[static_cast<std::size_t>(s)];
+      if (state < 0) return false;
+      if (state == 1 && face.label < 0) return false;  // the box lies outside the solid
+      const int b = face.across[k];
+      if (state == 1 && b >= 0 && face.label < b) {
+        const std::int32_t e = face.corners[(k + 1) % n];
+        const bool free = std::find(free_edges_.begin(), free_edges_.end(), std::make_pair(s, e)) != free_edges_.end();
+        if (free) {  // a whole edge inside the solid: it bounds both caps
+          cap_edges_[static_cast<std::size_t>(face.label)].push_back({corner_ref(s), corner_ref(e)});
+          cap_edges_[static_cast<std::size_t>(b)].push_back({corner_ref(e), corner_ref(s)});
+        }
+      }
+    }
+  }
+  return true;
+}
+
+bool CellClipper::triangulate_caps() {
+  std::unordered_map<std::int32_t, std::int32_t> point_of_ref;
+  std::vector<std::int32_t> refs;
+  std::vector<Vec2> points;
+  std::vector<CapEdge> edges;
+  std::vector<std::int32_t> order;
+  std::unordered_map<std::uint64_t, int> halfedges;
+  for (std::size_t plane = 0; plane < cap_edges_.size(); ++plane) {
+    if (cap_edges_[plane].empty()) continue;
+    const Projection proj(planes_[plane].normal);
+    point_of_ref.clear();
+    refs.clear();
+    points.clear();
+    edges.clear();
+    const auto cap_point = [&](std::int32_t ref) {
+      const auto [it, inserted] = point_of_ref.try_emplace(ref, static_cast<std::int32_t>(refs.size()));
+      if (inserted) {
+        refs.push_back(ref);
+        points.push_back(proj(position(ref)));
+      }
+      return it->second;
+    };
+    for (const CapEdge& e : cap_edges_[plane]) edges.push_back({cap_point(e[0]), cap_point(e[1])});
+    // Points that round to one position would be merged by the triangulation: refuse.
+    order.resize(points.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::int32_t>(k);
+    std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+      const Vec2& p = points[static_cast<std::size_t>(a)];
+      const Vec2& q = points[static_cast<std::size_t>(b)];
+      return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
+    });
+    for (std::size_t k = 1; k < order.size(); ++k)
+      if (points[static_cast<std::size_t>(order[k])] == points[static_cast<std::size_t>(order[k - 1])]) return false;
+    const CapTriangulation cap = triangulate_cap(points, edges);
+    if (!cap.ok) return false;
+    // The cap's half-edges, less one copy of every outline edge, must pair up with their twins.
+    halfedges.clear();
+    for (const Triangle& t : cap.triangles)
+      for (int k = 0; k < 3; ++k) ++halfedges[pair_key(t[k], t[(k + 1) % 3])];
+    for (const CapEdge& e : edges) {
+      const auto it = halfedges.find(pair_key(e[0], e[1]));
+      if (it == halfedges.end() || it->second == 0) return false;
+      --it->second;
+    }
+    for (const auto& [key, count] : halfedges) {
+      if (count == 0) continue;
+      const auto twin = halfedges.find(pair_key(static_cast<std::int32_t>(key & 0xffffffffu), static_cast<std::int32_t>(key >> 32)));
+      if (twin == halfedges.end() || twin->second != count) return false;
+    }
+    for (const Triangle& t : cap.triangles)
+      out_.add_triangle(out_index(refs[static_cast<std::size_t>(t[0])]), out_index(refs[static_cast<std::size_t>(t[1])]),
+                        out_index(refs[static_cast<std::size_t>(t[2])]), FaceTag::cut);
+  }
+  return true;
+}
+
+std::int32_t CellClipper::corner_ref(std::int32_t corner) {
+  std::int32_t& ref = corner_refs_[static_cast<std::size_t>(corner)];
+  if (ref < 0) {
+    ref = vertex_count_ + static_cast<std::int32_t>(points_.size());
+    points_.push_back(polytope_.corners[static_cast<std::size_t>(corner)]);
+    out_of_point_.push_back(-1);
+  }
+  return ref;
+}
+
+std::int32_t CellClipper::out_index(std::int32_t ref) {
+  if (ref < vertex_count_) {
+    const auto v = static_cast<std::size_t>(ref);
+    if (seen_out_[v] != stamp_) {
+      seen_out_[v] = stamp_;
+      out_of_vertex_[v] = out_.add_vertex(solid_->vertices[v]);
+    }
+    return out_of_vertex_[v];
+  }
+  std::int32_t& index = out_of_point_[static_cast<std::size_t>(ref - vertex_count_)];
+  if (index < 0) index = out_.add_vertex(points_[static_cast<std::size_t>(ref - vertex_count_)]);
+  return index;
+}
+
+}  // namespace shatter

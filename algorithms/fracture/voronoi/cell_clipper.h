@@ -1,0 +1,124 @@
+#pragma once
+/// Cuts one convex cell out of a closed solid in one pass over the triangles near the cell.
+///
+/// Design note: cutting a cell out of the solid plane by plane (MeshSlicer) costs one pass over the
+/// piece per face and re-cuts every earlier cap. Here each triangle whose bounds meet the cell's
+/// bounds is clipped against the cell's planes in a fixed order (Sutherland-Hodgman). Which side a
+/// point is on is always an exact predicate on the point as stored; a crossing point on a triangle
+/// edge is made once per edge and plane (from the edge's own end points, in a fixed order), so the
+/// two triangles of an edge share it and the clipped surface stays watertight. A triangle with all
+/// corners on the inside of a plane lies wholly inside it (convexity), so only planes that separate
+/// a triangle's corners clip it; triangles strictly inside every plane are copied as they are.
+///
+/// Each cap (one per face of the cell that meets the solid) is bounded by the clipped triangles'
+/// edges on its plane and by the stretches of the face's edges inside the solid. Those stretches
+/// end where a clipped triangle has a corner between edges on two planes (the edge of the cell
+/// passes through the triangle there); the same point serves both caps of that cell edge, and the
+/// inside stretches are found by walking along the edge, so both caps use the same segments. Corners
+/// of the cell inside the solid follow from the walks; a cell whose edges never meet the surface is
+/// wholly inside or outside, decided by an exact inside test of one corner. Each cap is triangulated
+/// by triangulate_cap. Whenever a step cannot be decided consistently (a point exactly on a plane,
+/// a corner of four planes, walks that disagree, a cap that does not close), `clip` returns false
+/// and writes nothing: the caller then cuts that cell with the sequential slicer.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/plane.h"
+#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/fracture/voronoi/cell_polytope.h"
+#include "algorithms/fracture/voronoi/point_in_mesh.h"
+
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <unordered_map>
+#include <vector>
+
+namespace shatter {
+
+/// Clips a closed, outward solid to convex cells; keeps scratch buffers between calls.
+class CellClipper {
+ public:
+  /// Bounds every triangle of `solid` (which must outlive the clipper), O(#F).
+  explicit CellClipper(const Mesh& solid);
+
+  /// Writes into `out` the part of the solid on the negative side of every plane of `planes`
+  /// (the cell; #P planes, any lengths), which lies in `bounds` (m). `polytope` is the cell clipped
+  /// to a box `box` (m) that holds the solid strictly inside, face labels indexing `planes`. The
+  /// part may be empty or have several connected parts. False (and `out` untouched) when the cell
+  /// must be cut by the exact sequential path.
+  bool clip(std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box, const Aabb& bounds,
+            Mesh& out);
+
+ private:
+  /// One corner of a triangle clipped so far: a point ref and the plane of the edge leaving it
+  /// (-1 on the triangle's own edges).
+  struct PolygonCorner {
+    std::int32_t ref;
+    int plane;
+    std::int32_t edge_u = -1;  ///< the solid edge the point lies on (-1: a solid vertex or inside)
+    std::int32_t edge_w = -1;
+  };
+  /// Where a clipped triangle passes a cell edge: the point, the plane whose cap edge starts there
+  /// ("out") and the plane whose cap edge ends there ("in").
+  struct EdgePoint {
+    std::int32_t ref;
+    int out_of;
+    int into;
+  };
+
+  bool clip_triangle(std::size_t f);
+  bool walk_cell_edges();
+  bool settle_corners();
+  bool triangulate_caps();
+  void select_planes(std::span<const Plane> planes, const Aabb& box);
+  void first_sight(std::int32_t v);
+  bool inside_all(std::int32_t v);
+  int vertex_side(std::int32_t v, int plane);
+  int corner_side(const PolygonCorner& c, int plane);
+  PolygonCorner crossing(const PolygonCorner& a, int side_a, const PolygonCorner& b, int plane);
+  std::int32_t corner_ref(std::int32_t corner);
+  std::int32_t out_index(std::int32_t ref);
+  [[nodiscard]] const Vec3& position(std::int32_t ref) const {
+    return ref < vertex_count_ ? solid_->vertices[static_cast<std::size_t>(ref)]
+                               : points_[static_cast<std::size_t>(ref - vertex_count_)];
+  }
+
+  const Mesh* solid_;
+  std::int32_t vertex_count_;
+  std::vector<Aabb> triangle_bounds_;
+  std::unique_ptr<PointInMesh> inside_;  // built on first need
+
+  // Per cell. A "ref" names a vertex of the solid (0..V-1) or a made point (V+k).
+  std::vector<Plane> planes_;                      // the planes that may cut the cell, in order
+  CellPolytope polytope_;
+  std::vector<int> face_of_plane_;                 // plane -> face index, -1 without a face
+  std::vector<std::uint32_t> seen_;                // per solid vertex: stamp of the cell its sides are for
+  std::vector<std::int32_t> side_offset_;          // per solid vertex: offset of its sides in sides_
+  std::vector<std::int8_t> sides_;                 // exact sides of solid vertices, #planes + 1 each
+  std::uint32_t stamp_ = 0;
+  std::vector<Vec3> points_;                       // made points
+  std::vector<std::int32_t> corner_refs_;          // polytope corner -> ref, -1 until used
+  struct CrossingKey {
+    std::uint64_t edge;  // the two refs of a solid edge's piece, smaller first
+    int plane;
+    bool operator==(const CrossingKey&) const = default;
+  };
+  struct CrossingHash {
+    std::size_t operator()(const CrossingKey& k) const {
+      return std::hash<std::uint64_t>()(k.edge * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(k.plane));
+    }
+  };
+  std::unordered_map<CrossingKey, std::int32_t, CrossingHash> edge_crossings_;  // -> ref
+  std::vector<std::int32_t> out_of_vertex_;        // solid vertex -> index in out_, valid if seen_out_
+  std::vector<std::uint32_t> seen_out_;
+  std::vector<std::int32_t> out_of_point_;         // made point -> index in out_, -1 if absent
+  std::vector<PolygonCorner> polygon_;
+  std::vector<PolygonCorner> clipped_;
+  std::vector<std::vector<CapEdge>> cap_edges_;    // per plane, edges over refs
+  std::vector<std::pair<std::uint64_t, EdgePoint>> edge_points_;  // (cell edge key, point)
+  std::vector<std::int8_t> corner_inside_;         // per polytope corner: -1 unknown, 0 out, 1 in
+  std::vector<std::pair<std::int32_t, std::int32_t>> free_edges_;  // cell edges no triangle meets
+  Mesh out_;
+};
+
+}  // namespace shatter
