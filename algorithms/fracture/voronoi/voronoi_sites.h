@@ -27,7 +27,9 @@ struct SiteSettings {
 /// [r, D] (D: farthest corner of the bounding box) in a uniform direction, which is a density falling
 /// as 1 / d^2: fragments are small near the impact and grow with the distance from it. Sites the ball
 /// cannot hold (it barely meets the solid) fall back to the outer distribution.
-/// Error when the solid is so thin that the draws run out.
+/// A solid so thin that the draws run out (a sliver fragment fractured again at runtime) gets the sites
+/// found so far: fewer fragments than requested, which the fragment count of the metrics shows, rather
+/// than a failed frame. With none found, one site at the box centre: one cell, the whole solid.
 Result<std::vector<Vec3>> sample_sites(const Mesh& solid, const FractureParams& params,
                                        const SiteSettings& settings = {});
 
