@@ -22,6 +22,10 @@ void add_fracture_command(CLI::App& app, int& exit_code);
 void add_stress_command(CLI::App& app, int& exit_code);
 /// `shatterbench grid`.
 void add_grid_command(CLI::App& app, int& exit_code);
+/// `shatterbench compare`.
+void add_compare_command(CLI::App& app, int& exit_code);
+/// `shatterbench merge`.
+void add_merge_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
 void add_table_command(CLI::App& app, int& exit_code);
 

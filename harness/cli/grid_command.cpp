@@ -4,12 +4,21 @@
 #include "harness/results/atomic_file.h"
 #include "harness/results/grid_report.h"
 #include "harness/results/run_context.h"
+#include "harness/results/callgrind_dumps.h"
+#include "harness/results/gbench_json.h"
+#include "harness/results/grid_reader.h"
+#include "harness/results/junit.h"
+#include "harness/pipeline/instruction_marks.h"
 
 #include <fmt/core.h>
 
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <fstream>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -36,7 +45,36 @@ struct GridCommandOptions {
   bool no_skip = false;
   std::string cache_dir;
   bool no_cache = false;
+  std::string format = "shatter";
+  std::string junit;
+  std::string shard;
+  std::string metric = "time";
+  bool update_baseline = false;
+  std::string baseline_dir = "results/baselines";
 };
+
+/// "K/N" -> (K, N); false when malformed.
+bool parse_shard(const std::string& text, int& index, int& count) {
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) return false;
+  try {
+    std::size_t a = 0, b = 0;
+    index = std::stoi(text.substr(0, slash), &a);
+    count = std::stoi(text.substr(slash + 1), &b);
+    return a == slash && b == text.size() - slash - 1;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+/// True when `path` lies inside `folder` (after resolving both as far as they exist).
+bool inside(const std::filesystem::path& path, const std::filesystem::path& folder) {
+  std::error_code ec;
+  const auto p = std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
+  const auto f = std::filesystem::weakly_canonical(std::filesystem::absolute(folder), ec);
+  const auto [fe, pe] = std::mismatch(f.begin(), f.end(), p.begin(), p.end());
+  return fe == f.end();
+}
 
 /// "cell k of N, elapsed, estimate" on one rewritten stderr line.
 class Progress {
@@ -64,6 +102,60 @@ std::filesystem::path csv_beside(const std::filesystem::path& json) {
   return csv;
 }
 
+/// Runs this same grid under callgrind with stage marks on and returns the child's results with the
+/// instruction counts attached (docs/compare.md, instruction mode).
+Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::filesystem::path& exe) {
+  if (std::system("valgrind --version >/dev/null 2>&1") != 0)
+    return Error{"--metric instructions: valgrind is not installed (scripts/install-deps installs it)"};
+  const auto folder = temporary_beside(std::filesystem::temp_directory_path() / "shatterbench-callgrind");
+  std::filesystem::create_directories(folder);
+  const auto child_json = folder / "child.json";
+  std::string cmd = fmt::format("valgrind --tool=callgrind --callgrind-out-file='{}' --dump-instr=no --dump-line=no '{}' grid "
+                                "--case '{}' --metric instructions --repetitions {} --json '{}'",
+                                (folder / "cg.out").string(), exe.string(), o.case_name, o.repetitions,
+                                child_json.string());
+  if (!o.fracturer.empty()) cmd += " --fracturer '" + o.fracturer + "'";
+  if (!o.stress.empty()) cmd += " --stress '" + o.stress + "'";
+  if (o.budget_ms) cmd += fmt::format(" --budget-ms {}", *o.budget_ms);
+  if (o.frames) cmd += fmt::format(" --frames {}", *o.frames);
+  const auto list = [](const std::vector<int>& v) {
+    std::string t;
+    for (std::size_t i = 0; i < v.size(); ++i) t += (i ? "," : "") + std::to_string(v[i]);
+    return t;
+  };
+  if (!o.prefracture.empty()) cmd += " --prefracture " + list(o.prefracture);
+  if (!o.runtime.empty()) cmd += " --runtime " + list(o.runtime);
+  if (o.no_skip) cmd += " --no-skip";
+  if (o.no_cache) cmd += " --no-cache";
+  if (!o.cache_dir.empty()) cmd += " --cache-dir '" + o.cache_dir + "'";
+  if (!o.shard.empty()) cmd += " --shard " + o.shard;
+  cmd += fmt::format(" >/dev/null 2>'{}'", (folder / "child.log").string());
+  const int status = std::system(cmd.c_str());
+  const auto cleanup = [&] { std::filesystem::remove_all(folder); };
+  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) > 1) {
+    std::string log;
+    std::ifstream in(folder / "child.log");
+    for (std::string line; std::getline(in, line);) log = line;  // the last line says why
+    cleanup();
+    return Error{"--metric instructions: the run under callgrind failed: " + log};
+  }
+  Result<StoredGrid> stored = read_grid_results(child_json);
+  if (!stored) {
+    cleanup();
+    return stored.error();
+  }
+  Result<std::vector<InstructionDump>> dumps = read_instruction_dumps(folder, "cg.out");
+  if (!dumps) {
+    cleanup();
+    return dumps.error();
+  }
+  GridResult grid = std::move(stored->grid);
+  Status attached = attach_instructions(grid, *dumps);
+  cleanup();
+  if (!attached) return attached.error();
+  return grid;
+}
+
 int run_grid_command(const GridCommandOptions& o) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
@@ -82,43 +174,94 @@ int run_grid_command(const GridCommandOptions& o) {
   options.prefracture = o.prefracture;
   options.runtime = o.runtime;
   options.no_skip = o.no_skip;
+  if (!o.shard.empty() && !parse_shard(o.shard, options.shard_index, options.shard_count))
+    return fail_input("--shard: expected K/N (e.g. 0/4), got \"" + o.shard + "\"");
+  if (o.format != "shatter" && o.format != "gbench")
+    return fail_input("--format: must be shatter or gbench, got \"" + o.format + "\"");
+  if (o.metric != "time" && o.metric != "instructions")
+    return fail_input("--metric: must be time or instructions, got \"" + o.metric + "\"");
   if (Status s = check_grid_options(*c, options); !s) return fail_input(s.error().message);
 
-  std::filesystem::path json_path, csv_path;
-  if (!o.json.empty()) {
-    json_path = o.json;
-    if (std::filesystem::is_directory(json_path)) return fail_input("--json: " + o.json + " is a folder, not a file");
-    if (json_path.extension() == ".csv") return fail_input("--json: " + o.json + " must not end in .csv (the CSV is written beside it)");
+  std::filesystem::path json_path = o.json;
+  if (o.update_baseline) {
+    if (o.format != "shatter") return fail_input("--update-baseline: baselines are written in the shatter format");
+    if (!o.shard.empty()) return fail_input("--update-baseline: a baseline is a whole grid, not a shard");
+    if (json_path.empty()) json_path = std::filesystem::path(o.baseline_dir) / (c->name + ".json");
+  } else if (!json_path.empty() && inside(json_path, o.baseline_dir)) {
+    return fail_input("--json: " + json_path.string() + " is in the baseline folder " + o.baseline_dir +
+                      "; baselines change only with --update-baseline");
+  }
+  std::filesystem::path csv_path;
+  if (!json_path.empty()) {
+    if (std::filesystem::is_directory(json_path)) return fail_input("--json: " + json_path.string() + " is a folder, not a file");
+    if (json_path.extension() == ".csv")
+      return fail_input("--json: " + json_path.string() + " must not end in .csv (the CSV is written beside it)");
     csv_path = csv_beside(json_path);
+  }
+  if (!o.junit.empty() && std::filesystem::is_directory(o.junit)) return fail_input("--junit: " + o.junit + " is a folder");
+  for (const std::filesystem::path& out : {json_path, std::filesystem::path(o.junit)}) {
     std::error_code ec;
-    const std::filesystem::path parent = json_path.parent_path();
-    if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-    if (ec) return fail_input("--json: cannot create folder " + parent.string() + ": " + ec.message());
+    const std::filesystem::path parent = out.parent_path();
+    if (!out.empty() && !parent.empty()) std::filesystem::create_directories(parent, ec);
+    if (ec) return fail_input("cannot create folder " + parent.string() + ": " + ec.message());
   }
 
   std::unique_ptr<PrefractureCache> cache;
   if (!o.no_cache) {
-    const std::filesystem::path folder = o.cache_dir.empty() ? PrefractureCache::default_folder() : std::filesystem::path(o.cache_dir);
+    const std::filesystem::path folder =
+        o.cache_dir.empty() ? PrefractureCache::default_folder() : std::filesystem::path(o.cache_dir);
     if (!folder.empty()) cache = std::make_unique<PrefractureCache>(folder);
   }
   options.cache = cache.get();
   Progress progress(options.repetitions);
   if (isatty(STDERR_FILENO)) options.progress = [&progress](int done, int total) { progress(done, total); };
 
+  const bool instructions = o.metric == "instructions";
+  const bool marking = instructions && instruction_marks::running_on_valgrind();
+  if (marking) instruction_marks::enable(true);
+
   Result<PreparedCase> prepared = prepare_case(std::move(*c));
   if (!prepared) return fail_input(prepared.error().message);
-  Result<GridResult> grid = run_grid(*prepared, options);
+  Result<GridResult> grid = Error{""};
+  if (instructions && !marking) {
+    std::error_code ec;
+    const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (ec) return fail_input("--metric instructions: cannot find the running executable: " + ec.message());
+    grid = run_under_callgrind(o, exe);
+  } else {
+    grid = run_grid(*prepared, options);
+  }
   if (!grid) return fail_input(grid.error().message);
 
-  std::cout << grid_to_markdown(*grid, prepared->spec.name) << std::flush;
-  if (!json_path.empty()) {
-    const std::string json = grid_to_json(*grid, prepared->spec, current_context()).dump(1) + "\n";
-    if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
-    if (Status s = write_file_atomically(csv_path, grid_to_csv(*grid)); !s) {
-      return fail_input("--json: " + s.error().message);
-    }
+  if (instructions && !marking) {
+    std::cout << grid_instructions_markdown(*grid, prepared->spec.name) << std::flush;
+  } else {
+    std::cout << grid_to_markdown(*grid, prepared->spec.name) << std::flush;
   }
-  if (grid->passed()) return exit_ok;
+  // Instruction mode times are valgrind's, not the game's: the budget gate applies to time mode only.
+  const bool gate_failed = !instructions && !grid->passed();
+  if (o.update_baseline && gate_failed)
+    std::fprintf(stderr, "shatterbench: baseline %s not updated: the budget gate failed\n", json_path.string().c_str());
+  if (!json_path.empty() && !(o.update_baseline && gate_failed)) {
+    const RunContext context = current_context();
+    const std::string json = o.format == "gbench"
+                                 ? grid_to_gbench_json(*grid, prepared->spec.name, context).dump(1) + "\n"
+                                 : grid_to_json(*grid, case_to_json(prepared->spec), context).dump(1) + "\n";
+    if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
+    if (Status s = write_file_atomically(csv_path, grid_to_csv(*grid)); !s) return fail_input("--json: " + s.error().message);
+    if (o.update_baseline) std::fprintf(stderr, "shatterbench: baseline %s updated\n", json_path.string().c_str());
+  }
+  if (!o.junit.empty()) {
+    JunitSuite suite{"shatterbench.grid." + prepared->spec.name, {}};
+    for (const GridCell& cell : grid->cells) {
+      JunitCase jc{fmt::format("cell {} x {}", cell.prefracture, cell.runtime), suite.name, cell.worst_frame_ms / 1000.0, {}};
+      if (!instructions && !cell.within_budget)
+        jc.failure = fmt::format("worst frame {:.3f} ms > budget {:g} ms", cell.worst_frame_ms, grid->budget_ms);
+      suite.cases.push_back(std::move(jc));
+    }
+    if (Status s = write_file_atomically(o.junit, junit_xml({suite})); !s) return fail_input("--junit: " + s.error().message);
+  }
+  if (!gate_failed) return exit_ok;
   for (const GridCell& cell : grid->cells)
     if (!cell.within_budget)
       std::fprintf(stderr, "shatterbench: gate failed: cell %d x %d: worst frame %.3f ms > budget %g ms\n",
@@ -140,13 +283,20 @@ void add_grid_command(CLI::App& app, int& exit_code) {
       ->check(CLI::PositiveNumber);
   cmd->add_option("--frames", o->frames, "Frames per run (default: the case's frames)");
   cmd->add_option("--json", o->json, "Write the results JSON here (and the CSV beside it, .csv)");
+  cmd->add_option("--format", o->format, "Format of the --json file: shatter (default) or gbench (Google Benchmark's)");
+  cmd->add_option("--junit", o->junit, "Write JUnit XML here: one test case per cell (the budget gate)");
   cmd->add_option("--prefracture", o->prefracture, "Pre-fracture counts, e.g. 10,50,100 (default: the case's grid)")
       ->delimiter(',');
   cmd->add_option("--runtime", o->runtime, "Runtime counts, e.g. 5,25 (default: the case's grid)")->delimiter(',');
+  cmd->add_option("--shard", o->shard, "Run every N-th cell starting at K (K/N, 0 <= K < N); join with `merge`");
+  cmd->add_option("--metric", o->metric, "time (default) or instructions (counted under callgrind, per stage and frame)");
   cmd->add_flag("--no-skip", o->no_skip, "Turn every automatic stage skip off (cache, box culling, partial re-solves)");
   cmd->add_option("--cache-dir", o->cache_dir, "Pre-fracture cache folder (default: $SHATTERBENCH_CACHE, "
                                                "$XDG_CACHE_HOME/shatterbench or ~/.cache/shatterbench)");
   cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the pre-fracture cache");
+  cmd->add_flag("--update-baseline", o->update_baseline,
+                "Write the results as the case's baseline (BASELINE-DIR/<case>.json, or --json); the only way a baseline changes");
+  cmd->add_option("--baseline-dir", o->baseline_dir, "Baseline folder (default results/baselines)");
   cmd->callback([o, &exit_code] { exit_code = run_grid_command(*o); });
 }
 

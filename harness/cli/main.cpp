@@ -16,6 +16,8 @@ int main(int argc, char** argv) {
   add_fracture_command(app, exit_code);
   add_stress_command(app, exit_code);
   add_grid_command(app, exit_code);
+  add_compare_command(app, exit_code);
+  add_merge_command(app, exit_code);
   add_table_command(app, exit_code);
   try {
     app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #include "harness/grid/grid_runner.h"
 
 #include "algorithms/register_all.h"
+#include "harness/pipeline/instruction_marks.h"
 
 #include <algorithm>
 #include <chrono>
@@ -42,6 +43,7 @@ GridSample sample_of(const RunResult& run) {
   s.seed = run.prefracture_seed;
   s.frame_ms = run.frame_ms;
   s.event_ms = run.event_ms;
+  s.event_frame = run.event_frames.empty() ? -1 : run.event_frames.front();
   s.worst_frame_ms = run.frame_ms.empty() ? 0.0 : *std::max_element(run.frame_ms.begin(), run.frame_ms.end());
   s.stages_ms = run.frame_stage_ms;
   s.setup_ms = run.setup_ms;
@@ -122,6 +124,9 @@ Status check_grid_options(const Case& c, const GridOptions& o) {
   if (o.repetitions < 1) return Error{"--repetitions: must be >= 1, got " + std::to_string(o.repetitions)};
   if (o.frames < 0) return Error{"--frames: must be >= 1, got " + std::to_string(o.frames)};
   if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
+  if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
+    return Error{"--shard: K/N needs N >= 1 and 0 <= K < N, got " + std::to_string(o.shard_index) + "/" +
+                 std::to_string(o.shard_count)};
   if (!o.prefracture.empty())
     if (Status s = check_counts(o.prefracture, "--prefracture"); !s) return s;
   if (!o.runtime.empty())
@@ -143,10 +148,17 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
   out.repetitions = o.repetitions;
   out.frames = o.frames > 0 ? o.frames : c.frames;
   out.no_skip = o.no_skip;
-  const int total = static_cast<int>(prefracture.size() * runtime.size()) * o.repetitions;
+  out.shard_index = o.shard_index;
+  out.shard_count = o.shard_count;
+  int cells_here = 0;
+  for (std::size_t i = 0; i < prefracture.size() * runtime.size(); ++i)
+    cells_here += static_cast<int>(i % static_cast<std::size_t>(o.shard_count)) == o.shard_index ? 1 : 0;
+  const int total = cells_here * o.repetitions;
   int done = 0;
+  std::size_t cell_index = 0;
   for (const int p : prefracture) {
     for (const int r : runtime) {
+      if (static_cast<int>(cell_index++ % static_cast<std::size_t>(o.shard_count)) != o.shard_index) continue;
       GridCell cell;
       cell.prefracture = p;
       cell.runtime = r;
@@ -169,6 +181,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
         run.no_skip = o.no_skip;
         run.cache = o.cache;
         run.partition_samples = o.partition_samples;
+        instruction_marks::set_run(p, r, rep);
         Result<RunResult> result = run_destruction(prepared, run);
         if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
         cell.samples.push_back(sample_of(*result));

@@ -13,6 +13,7 @@
 #include "harness/results/sample_statistics.h"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,8 +31,21 @@ struct GridOptions {
   bool no_skip = false;                ///< every automatic skip off (see destruction_run.h)
   const PrefractureCache* cache = nullptr;  ///< pre-fracture cache, or none
   int partition_samples = 256;         ///< points of the partition-error tests
+  int shard_index = 0;                 ///< run the cells i with i % shard_count == shard_index
+  int shard_count = 1;                 ///< number of shards (1: the whole grid)
+  bool count_instructions = false;     ///< mark stage boundaries for the instruction counter (callgrind)
   /// Called after each run with (runs done, runs in all); may be empty.
   std::function<void(int, int)> progress;
+};
+
+/// Retired instructions of one run (instruction mode, docs/compare.md): per stage inside frames and in
+/// the setup, per frame, and of the first event frame. Counts are held as doubles (exact below 2^53).
+struct InstructionCounts {
+  StageTimes stages{};                           ///< per stage, summed over the frames
+  StageTimes setup{};                            ///< per stage, offline setup
+  std::vector<double> frames;                    ///< per frame
+  double event = 0.0;                            ///< the first event frame
+  double worst_frame = 0.0;                      ///< the largest frame
 };
 
 /// One repetition of one cell, as kept in the results.
@@ -39,6 +53,7 @@ struct GridSample {
   std::uint64_t seed = 0;                        ///< seed of the pre-fracture and runtime fracture
   std::vector<double> frame_ms;                  ///< every frame
   double event_ms = 0.0;                         ///< the first event frame
+  int event_frame = -1;                          ///< its index (-1: no impact landed)
   double worst_frame_ms = 0.0;                   ///< the slowest frame
   StageTimes stages_ms{};                        ///< stage times inside frames
   StageTimes setup_ms{};                         ///< offline stage times
@@ -50,6 +65,7 @@ struct GridSample {
   int falling_clusters = 0;                      ///< clusters that fell
   int bodies = 0;                                ///< physics bodies at the end
   SolverReport solver;                           ///< stress solves summed
+  std::optional<InstructionCounts> instructions; ///< instruction mode only
 };
 
 /// Worst error figures over a cell's repetitions.
@@ -93,6 +109,9 @@ struct GridResult {
   bool no_skip = false;                ///< automatic skips were off
   std::vector<GridCell> cells;         ///< pre-fracture major, runtime minor
   double wall_s = 0.0;                 ///< wall time of the whole grid, s
+  std::string metric = "time";         ///< "time", or "instructions" when samples carry instruction counts
+  int shard_index = 0;                 ///< which shard this is (see GridOptions)
+  int shard_count = 1;                 ///< of how many
 
   /// True when every cell is within the budget.
   [[nodiscard]] bool passed() const;

@@ -21,6 +21,20 @@ bool overlaps(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
 }
 
+#ifdef SHATTER_PLANTED_SLOWDOWN_SHARE
+/// Test-only planted slowdown (CMake option SHATTER_PLANTED_SLOWDOWN): arithmetic for `share` of the
+/// time the step took. In time mode that is the share of the stage's time; under callgrind, whose
+/// slowdown is about the same per instruction for this loop and for Bullet, about the same share of
+/// its instructions.
+void planted_work(std::chrono::steady_clock::duration took, double share) {
+  const auto until = std::chrono::steady_clock::now() +
+                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(took * share);
+  volatile std::uint64_t x = 1;
+  while (std::chrono::steady_clock::now() < until)
+    for (int i = 0; i < 64; ++i) x = x * 6364136223846793005ULL + 1442695040888963407ULL;
+}
+#endif
+
 /// The stages a case's needs imply (physics needs colliders; stress needs bonds; all need fragments).
 struct StagePlan {
   bool fragments = true;
@@ -393,6 +407,7 @@ Status Run::event(int frame, const Impact& impact, int event_index) {
 
 Result<RunResult> Run::execute() {
   plan_ = plan_for(c_.needs);
+  instruction_marks::set_frame(-1);
   if (Status s = setup(); !s) return s.error();
   r_.runtime_seed = c_.prefracture.seed + o_.repetition;
 
@@ -400,6 +415,7 @@ Result<RunResult> Run::execute() {
   r_.frame_ms.assign(static_cast<std::size_t>(frames), 0.0);
   int event_index = 0;
   for (int frame = 0; frame < frames; ++frame) {
+    instruction_marks::set_frame(frame);
     const auto start = std::chrono::steady_clock::now();
     bool event_frame = false;
     for (const ImpactEvent& e : c_.impacts) {
@@ -410,7 +426,13 @@ Result<RunResult> Run::execute() {
     }
     if (world_ && plan_.physics) {
       StageTimer timer(r_.frame_stage_ms, Stage::physics);
+#ifdef SHATTER_PLANTED_SLOWDOWN_SHARE
+      const auto step_start = std::chrono::steady_clock::now();
       world_->step();
+      planted_work(std::chrono::steady_clock::now() - step_start, SHATTER_PLANTED_SLOWDOWN_SHARE);
+#else
+      world_->step();
+#endif
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     r_.frame_ms[static_cast<std::size_t>(frame)] = ms;

@@ -8,6 +8,8 @@
 /// first stress solve, the first colliders) and `frames` (work inside frames, summed over the run:
 /// the runtime event's stages and the physics steps). Only the second counts against the frame budget.
 
+#include "harness/pipeline/instruction_marks.h"
+
 #include <array>
 #include <chrono>
 #include <cstddef>
@@ -67,18 +69,24 @@ class StageLog {
   std::vector<StageSkip> skips_;
 };
 
-/// Adds the wall time of its scope to one entry of a StageTimes, in ms.
+/// Adds the wall time of its scope to one entry of a StageTimes, in ms; in instruction mode it also
+/// marks the scope for callgrind (instruction_marks.h).
 class StageTimer {
  public:
   StageTimer(StageTimes& times, Stage stage)
-      : slot_(times[static_cast<std::size_t>(stage)]), start_(std::chrono::steady_clock::now()) {}
+      : stage_(stage), slot_(times[static_cast<std::size_t>(stage)]) {
+    instruction_marks::begin();
+    start_ = std::chrono::steady_clock::now();
+  }
   ~StageTimer() {
     slot_ += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_).count();
+    instruction_marks::end(stage_name(stage_));
   }
   StageTimer(const StageTimer&) = delete;
   StageTimer& operator=(const StageTimer&) = delete;
 
  private:
+  Stage stage_;
   double& slot_;
   std::chrono::steady_clock::time_point start_;
 };

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <map>
 
+#include "harness/results/sample_statistics.h"
+
 namespace shatter {
 namespace {
 
@@ -42,10 +44,19 @@ Json error_json(const CellError& e) {
           {"stress", {{"converged", e.solver_converged}, {"residual", e.solver_residual}}}};
 }
 
+Json instructions_json(const InstructionCounts& c) {
+  return {{"stages", stages_json(c.stages)},
+          {"setup", stages_json(c.setup)},
+          {"frames", c.frames},
+          {"event", c.event},
+          {"worst_frame", c.worst_frame}};
+}
+
 Json sample_json(const GridSample& s) {
-  return {{"seed", s.seed},
+  Json j = {{"seed", s.seed},
           {"frame_ms", s.frame_ms},
           {"event_ms", s.event_ms},
+          {"event_frame", s.event_frame},
           {"worst_frame_ms", s.worst_frame_ms},
           {"stages_ms", stages_json(s.stages_ms)},
           {"setup_ms", stages_json(s.setup_ms)},
@@ -57,6 +68,8 @@ Json sample_json(const GridSample& s) {
           {"falling_clusters", s.falling_clusters},
           {"bodies", s.bodies},
           {"solver", solver_json(s.solver)}};
+  if (s.instructions) j["instructions"] = instructions_json(*s.instructions);
+  return j;
 }
 
 Json cell_json(const GridCell& c) {
@@ -81,7 +94,9 @@ Json cell_json(const GridCell& c) {
           {"samples", samples}};
 }
 
-Json case_json(const Case& c) {
+}  // namespace
+
+nlohmann::ordered_json case_to_json(const Case& c) {
   Json impacts = Json::array();
   for (const ImpactEvent& e : c.impacts)
     impacts.push_back({{"frame", e.frame},
@@ -100,21 +115,23 @@ Json case_json(const Case& c) {
           {"needs", c.needs.names()}};
 }
 
-}  // namespace
-
-nlohmann::ordered_json grid_to_json(const GridResult& grid, const Case& c, const RunContext& context) {
+nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::ordered_json& case_block,
+                                    const RunContext& context) {
   Json cells = Json::array();
   for (const GridCell& cell : grid.cells) cells.push_back(cell_json(cell));
-  return {{"schema_version", kGridSchemaVersion},
-          {"context", to_json(context)},
-          {"case", case_json(c)},
-          {"budget_ms", grid.budget_ms},
-          {"repetitions", grid.repetitions},
-          {"frames", grid.frames},
-          {"no_skip", grid.no_skip},
-          {"passed", grid.passed()},
-          {"wall_s", grid.wall_s},
-          {"cells", cells}};
+  Json out = {{"schema_version", kGridSchemaVersion},
+              {"metric", grid.metric},
+              {"context", to_json(context)},
+              {"case", case_block},
+              {"budget_ms", grid.budget_ms},
+              {"repetitions", grid.repetitions},
+              {"frames", grid.frames},
+              {"no_skip", grid.no_skip}};
+  if (grid.shard_count > 1) out["shard"] = {{"index", grid.shard_index}, {"count", grid.shard_count}};
+  out["passed"] = grid.passed();
+  out["wall_s"] = grid.wall_s;
+  out["cells"] = cells;
+  return out;
 }
 
 std::string grid_to_csv(const GridResult& grid) {
@@ -176,6 +193,40 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
   } else {
     out += fmt::format("\n{} of {} cells over the {} ms budget (marked !).\n", failed, grid.cells.size(),
                        grid.budget_ms);
+  }
+  return out;
+}
+
+std::string grid_instructions_markdown(const GridResult& grid, const std::string& case_name) {
+  std::vector<int> rows, cols;
+  std::map<std::pair<int, int>, const GridCell*> at;
+  for (const GridCell& c : grid.cells) {
+    if (std::find(rows.begin(), rows.end(), c.prefracture) == rows.end()) rows.push_back(c.prefracture);
+    if (std::find(cols.begin(), cols.end(), c.runtime) == cols.end()) cols.push_back(c.runtime);
+    at[{c.prefracture, c.runtime}] = &c;
+  }
+  const auto median_of_field = [](const GridCell& c, double InstructionCounts::*field) {
+    std::vector<double> v;
+    for (const GridSample& s : c.samples)
+      if (s.instructions) v.push_back((*s.instructions).*field);
+    return median_of(v);
+  };
+  std::string out = fmt::format("Case `{}`: retired instructions of the largest frame, millions (median over {} "
+                                "repetitions of {} frames; counted under callgrind)\n\n",
+                                case_name, grid.repetitions, grid.frames);
+  out += "| pre-fracture \\ runtime |";
+  for (const int c : cols) out += fmt::format(" {} |", c);
+  out += "\n|---:|";
+  for (std::size_t i = 0; i < cols.size(); ++i) out += "---:|";
+  out += "\n";
+  for (const int r : rows) {
+    out += fmt::format("| {} |", r);
+    for (const int c : cols) {
+      const auto it = at.find({r, c});
+      out += it == at.end() ? std::string(" |")
+                            : fmt::format(" {:.3f} |", median_of_field(*it->second, &InstructionCounts::worst_frame) / 1e6);
+    }
+    out += "\n";
   }
   return out;
 }

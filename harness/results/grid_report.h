@@ -15,9 +15,14 @@ namespace shatter {
 /// Version of the results schema written in `schema_version`; bumped on incompatible changes.
 inline constexpr int kGridSchemaVersion = 1;
 
-/// The results JSON: `schema_version`, `context`, `case`, `budget_ms`, `repetitions`, `frames`,
-/// `no_skip`, `passed`, `wall_s`, `cells`.
-nlohmann::ordered_json grid_to_json(const GridResult& grid, const Case& c, const RunContext& context);
+/// The results JSON's `case` block of `c`.
+nlohmann::ordered_json case_to_json(const Case& c);
+
+/// The results JSON: `schema_version`, `context`, `case` (`case_block`, from case_to_json),
+/// `budget_ms`, `repetitions`, `frames`, `no_skip`, `shard` (when a shard), `passed`, `wall_s`,
+/// `cells`.
+nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::ordered_json& case_block,
+                                    const RunContext& context);
 
 /// One header line and one line per cell; times in ms.
 std::string grid_to_csv(const GridResult& grid);
@@ -25,5 +30,9 @@ std::string grid_to_csv(const GridResult& grid);
 /// The Markdown table: rows pre-fracture counts, columns runtime counts, each cell its worst frame in
 /// ms, marked "**x.xx !**" when over budget; followed by a one-line verdict.
 std::string grid_to_markdown(const GridResult& grid, const std::string& case_name);
+
+/// The instruction-mode table: each cell the median over repetitions of its largest frame's retired
+/// instructions, in millions, followed by the event frame's median.
+std::string grid_instructions_markdown(const GridResult& grid, const std::string& case_name);
 
 }  // namespace shatter

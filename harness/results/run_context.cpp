@@ -78,7 +78,7 @@ std::string context_fingerprint(const RunContext& c) {
     for (unsigned char byte : field) hash = (hash ^ byte) * 0x100000001b3ULL;  // FNV prime
     hash = (hash ^ 0x1fU) * 0x100000001b3ULL;
   };
-  for (const std::string* field : {&c.commit, &c.build_type, &c.compiler, &c.flags, &c.cgal_version,
+  for (const std::string* field : {&c.build_type, &c.compiler, &c.flags, &c.cgal_version,
                                    &c.eigen_version, &c.bullet_version, &c.cpu_model})
     add(*field);
   add(std::to_string(c.cores));

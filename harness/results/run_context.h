@@ -2,11 +2,12 @@
 /// The context block of every result (DESIGN.md section 7: commit, compiler, flags, library versions,
 /// CPU, date), and the fingerprint that says whether two results' timings may be compared.
 ///
-/// The fingerprint is FNV-1a (64 bit) over what decides how fast the same code runs: commit, build
-/// type, compiler, flags, the CGAL, Eigen and Bullet versions, CPU model and core count, each field
-/// followed by a 0x1f byte so that fields cannot run into each other. It is written as 16 lower-case
-/// hex digits. The date and host name are left out: two runs on twin machines, or on one machine on two
-/// days, are comparable. `compare` refuses results whose fingerprints differ.
+/// The fingerprint is FNV-1a (64 bit) over what decides how fast the same code runs, apart from the
+/// code itself: build type, compiler, flags, the CGAL, Eigen and Bullet versions, CPU model and core
+/// count, each field followed by a 0x1f byte so that fields cannot run into each other. It is written
+/// as 16 lower-case hex digits. The commit is left out: comparing two commits on one build setup is
+/// what a regression gate does. The date and host name are left out too: two runs on twin machines,
+/// or on one machine on two days, are comparable. `compare` refuses results whose fingerprints differ.
 
 #include "algorithms/core/result.h"
 

@@ -1,0 +1,258 @@
+#include "harness/compare/grid_compare.h"
+
+#include "harness/compare/mann_whitney.h"
+#include "harness/results/sample_statistics.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace shatter {
+namespace {
+
+std::string cell_name(const GridCell& c) { return fmt::format("{} x {}", c.prefracture, c.runtime); }
+
+std::string cell_key(const GridCell& c) {
+  return fmt::format("{}|{}|{}|{}|{}", c.prefracture, c.runtime, c.prefracturer, c.fracturer, c.stress);
+}
+
+double p99_of(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return quantile_of_sorted(v, 0.99);
+}
+
+double relative_change(double base, double next) { return base > 0.0 ? next / base - 1.0 : 0.0; }
+
+/// One timed or counted row from per-repetition samples.
+ComparisonRow measure_row(const std::string& cell, const std::string& what, const std::vector<double>& base,
+                          const std::vector<double>& next, const std::vector<double>& base_p99_set,
+                          const std::vector<double>& next_p99_set, const CompareOptions& o) {
+  ComparisonRow r;
+  r.cell = cell;
+  r.what = what;
+  r.base_median = median_of(base);
+  r.new_median = median_of(next);
+  r.change = relative_change(r.base_median, r.new_median);
+  r.base_p99 = p99_of(base_p99_set);
+  r.new_p99 = p99_of(next_p99_set);
+  if (o.metric == "time") {
+    const MannWhitneyResult test = mann_whitney_u(base, next);
+    r.p_value = test.p_value;
+    const bool significant = test.p_value < o.alpha;
+    if (r.change > o.max_slowdown && significant) {
+      r.verdict = Verdict::regressed;
+      r.note = fmt::format("median +{:.1f} % > {:.1f} % and p = {:.2g} < {:g}", 100 * r.change, 100 * o.max_slowdown,
+                           test.p_value, o.alpha);
+    } else if (r.change < -o.max_slowdown && significant) {
+      r.verdict = Verdict::improved;
+      r.note = fmt::format("median {:.1f} %, p = {:.2g}", 100 * r.change, test.p_value);
+    } else if (r.change > o.max_slowdown) {
+      r.note = fmt::format("slower by {:.1f} % but p = {:.2g} >= {:g}: not shown to be more than noise",
+                           100 * r.change, test.p_value, o.alpha);
+    }
+  } else {
+    if (r.change > o.max_slowdown) {
+      r.verdict = Verdict::regressed;
+      r.note = fmt::format("+{:.2f} % instructions > {:.1f} %", 100 * r.change, 100 * o.max_slowdown);
+    } else if (r.change < -o.max_slowdown) {
+      r.verdict = Verdict::improved;
+      r.note = fmt::format("{:.2f} % instructions", 100 * r.change);
+    }
+  }
+  return r;
+}
+
+ComparisonRow accuracy_row(const GridCell& base, const GridCell& next, const AccuracyTolerances& t) {
+  ComparisonRow r;
+  r.cell = cell_name(base);
+  r.what = "accuracy";
+  std::vector<std::string> failed;
+  const CellError& b = base.error;
+  const CellError& n = next.error;
+  if (n.prefracture_volume_error > b.prefracture_volume_error + t.volume_error)
+    failed.push_back(fmt::format("pre-fracture volume error {:.3g} -> {:.3g}", b.prefracture_volume_error,
+                                 n.prefracture_volume_error));
+  if (n.runtime_volume_error > b.runtime_volume_error + t.volume_error)
+    failed.push_back(fmt::format("runtime volume error {:.3g} -> {:.3g}", b.runtime_volume_error, n.runtime_volume_error));
+  if (n.prefracture_partition_error > b.prefracture_partition_error + t.partition_error)
+    failed.push_back(fmt::format("pre-fracture partition error {:.3g} -> {:.3g}", b.prefracture_partition_error,
+                                 n.prefracture_partition_error));
+  if (n.runtime_partition_error > b.runtime_partition_error + t.partition_error)
+    failed.push_back(fmt::format("runtime partition error {:.3g} -> {:.3g}", b.runtime_partition_error,
+                                 n.runtime_partition_error));
+  if (b.prefracture_all_closed && !n.prefracture_all_closed) failed.emplace_back("a pre-fracture fragment is not closed");
+  if (b.runtime_all_closed && !n.runtime_all_closed) failed.emplace_back("a runtime piece is not closed");
+  if (b.solver_converged && !n.solver_converged) failed.emplace_back("a stress solve did not converge");
+  r.base_median = std::max(b.prefracture_volume_error, b.runtime_volume_error);
+  r.new_median = std::max(n.prefracture_volume_error, n.runtime_volume_error);
+  if (!failed.empty()) {
+    r.verdict = Verdict::failed;
+    for (std::size_t i = 0; i < failed.size(); ++i) r.note += (i ? "; " : "") + failed[i];
+  }
+  return r;
+}
+
+std::vector<double> per_rep(const GridCell& c, double GridSample::*field) {
+  std::vector<double> v;
+  for (const GridSample& s : c.samples) v.push_back(s.*field);
+  return v;
+}
+
+bool has_instructions(const GridCell& c) {
+  return std::all_of(c.samples.begin(), c.samples.end(), [](const GridSample& s) { return s.instructions.has_value(); });
+}
+
+}  // namespace
+
+bool CompareReport::failed() const {
+  if (!mismatches.empty()) return true;
+  return std::any_of(rows.begin(), rows.end(),
+                     [](const ComparisonRow& r) { return r.verdict == Verdict::regressed || r.verdict == Verdict::failed; });
+}
+
+Status check_compare_options(const CompareOptions& o) {
+  if (!std::isfinite(o.max_slowdown) || o.max_slowdown <= 0.0)
+    return Error{fmt::format("--max-slowdown: must be a finite number > 0, got {}", o.max_slowdown)};
+  if (!std::isfinite(o.alpha) || o.alpha <= 0.0 || o.alpha >= 1.0)
+    return Error{fmt::format("--alpha: must be in (0, 1), got {}", o.alpha)};
+  if (o.metric != "time" && o.metric != "instructions")
+    return Error{"--metric: must be time or instructions, got \"" + o.metric + "\""};
+  return {};
+}
+
+CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, const CompareOptions& o,
+                            const AccuracyTolerances& t) {
+  CompareReport out;
+  out.metric = o.metric;
+  if (base.context.fingerprint != next.context.fingerprint)
+    out.mismatches.push_back(fmt::format(
+        "build fingerprints differ ({} in {}, {} in {}): the two results were measured with different "
+        "compilers, flags, libraries or CPUs and cannot be compared",
+        base.context.fingerprint, base.path.string(), next.context.fingerprint, next.path.string()));
+  if (base.case_block != next.case_block)
+    out.mismatches.push_back(fmt::format("the cases differ ({} in {}, {} in {}, or their settings)", base.case_name,
+                                         base.path.string(), next.case_name, next.path.string()));
+  if (base.grid.frames != next.grid.frames)
+    out.mismatches.push_back(fmt::format("frames per run differ: {} against {}", base.grid.frames, next.grid.frames));
+
+  std::map<std::string, const GridCell*> new_cells;
+  for (const GridCell& c : next.grid.cells) new_cells[cell_key(c)] = &c;
+
+  const int base_reps = base.grid.repetitions, new_reps = next.grid.repetitions;
+  if (o.metric == "time" && smallest_p_value(base_reps, new_reps) >= o.alpha)
+    out.warnings.push_back(fmt::format(
+        "{} and {} repetitions: the smallest p-value the U test can give is {:.2g}, not below alpha {:g}, so no "
+        "timing regression can be shown; use 9 or more repetitions",
+        base_reps, new_reps, smallest_p_value(base_reps, new_reps), o.alpha));
+  else if (o.metric == "time" && (base_reps < 9 || new_reps < 9))
+    out.warnings.push_back(fmt::format("fewer than 9 repetitions ({} and {}): the U test has little power",
+                                       base_reps, new_reps));
+
+  for (const GridCell& b : base.grid.cells) {
+    const auto it = new_cells.find(cell_key(b));
+    if (it == new_cells.end()) {
+      out.mismatches.push_back(fmt::format("cell {} ({}, {}, {}) of {} is missing from {}", cell_name(b), b.prefracturer,
+                                           b.fracturer, b.stress, base.path.string(), next.path.string()));
+      continue;
+    }
+    const GridCell& n = *it->second;
+    const std::string name = cell_name(b);
+    if (o.metric == "instructions") {
+      if (!has_instructions(b) || !has_instructions(n)) {
+        out.mismatches.push_back(fmt::format("cell {}: no instruction counts (run grid --metric instructions)", name));
+        continue;
+      }
+      std::vector<double> bw, nw, bf, nf;
+      for (const GridSample& s : b.samples) {
+        bw.push_back(s.instructions->worst_frame);
+        bf.insert(bf.end(), s.instructions->frames.begin(), s.instructions->frames.end());
+      }
+      for (const GridSample& s : n.samples) {
+        nw.push_back(s.instructions->worst_frame);
+        nf.insert(nf.end(), s.instructions->frames.begin(), s.instructions->frames.end());
+      }
+      out.rows.push_back(measure_row(name, "worst frame", bw, nw, bf, nf, o));
+      for (const Stage st : kAllStages) {
+        std::vector<double> bs, ns;
+        for (const GridSample& s : b.samples) bs.push_back(s.instructions->stages[static_cast<std::size_t>(st)]);
+        for (const GridSample& s : n.samples) ns.push_back(s.instructions->stages[static_cast<std::size_t>(st)]);
+        if (median_of(bs) == 0.0 && median_of(ns) == 0.0) continue;
+        out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)), bs, ns, bs, ns, o));
+      }
+    } else {
+      std::vector<double> bf, nf;
+      for (const GridSample& s : b.samples) bf.insert(bf.end(), s.frame_ms.begin(), s.frame_ms.end());
+      for (const GridSample& s : n.samples) nf.insert(nf.end(), s.frame_ms.begin(), s.frame_ms.end());
+      out.rows.push_back(measure_row(name, "worst frame", per_rep(b, &GridSample::worst_frame_ms),
+                                     per_rep(n, &GridSample::worst_frame_ms), bf, nf, o));
+      for (const Stage st : kAllStages) {
+        std::vector<double> bs, ns;
+        for (const GridSample& s : b.samples) bs.push_back(s.stages_ms[static_cast<std::size_t>(st)]);
+        for (const GridSample& s : n.samples) ns.push_back(s.stages_ms[static_cast<std::size_t>(st)]);
+        if (median_of(bs) == 0.0 && median_of(ns) == 0.0) continue;
+        out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)), bs, ns, bs, ns, o));
+      }
+    }
+    out.rows.push_back(accuracy_row(b, n, t));
+  }
+  return out;
+}
+
+std::string compare_markdown(const CompareReport& report, const CompareOptions& o) {
+  std::string out;
+  int regressed = 0, failed = 0, improved = 0;
+  for (const ComparisonRow& r : report.rows) {
+    regressed += r.verdict == Verdict::regressed;
+    failed += r.verdict == Verdict::failed;
+    improved += r.verdict == Verdict::improved;
+  }
+  if (!report.mismatches.empty()) {
+    out += "**Cannot compare:**\n\n";
+    for (const std::string& m : report.mismatches) out += "- " + m + "\n";
+    out += "\n";
+  }
+  for (const std::string& w : report.warnings) out += "> warning: " + w + "\n\n";
+  const bool time = report.metric == "time";
+  out += fmt::format("**{}**: {} regressed, {} accuracy failures, {} improved, {} rows; metric {}, max slowdown "
+                     "{:g} %{}\n\n",
+                     report.failed() ? "FAIL" : "PASS", regressed, failed, improved, report.rows.size(), report.metric,
+                     100 * o.max_slowdown, time ? fmt::format(", alpha {:g}", o.alpha) : std::string());
+  const char* unit = time ? "ms" : "instr.";
+  out += fmt::format("| cell | what | base median {0} | new median {0} | change | base p99 {0} | new p99 {0} | p | "
+                     "verdict |\n",
+                     unit);
+  out += "|---|---|---:|---:|---:|---:|---:|---:|---|\n";
+  const auto rank = [](Verdict v) {
+    switch (v) {
+      case Verdict::failed: return 0;
+      case Verdict::regressed: return 1;
+      case Verdict::improved: return 2;
+      case Verdict::same: return 3;
+    }
+    return 3;
+  };
+  std::vector<const ComparisonRow*> rows;
+  for (const ComparisonRow& r : report.rows) rows.push_back(&r);
+  std::stable_sort(rows.begin(), rows.end(), [&](const auto* a, const auto* b) { return rank(a->verdict) < rank(b->verdict); });
+  const auto value = [&](double v) { return time ? fmt::format("{:.3f}", v) : fmt::format("{:.0f}", v); };
+  for (const ComparisonRow* r : rows) {
+    const char* verdict = r->verdict == Verdict::regressed ? "**regressed**"
+                          : r->verdict == Verdict::failed  ? "**failed**"
+                          : r->verdict == Verdict::improved ? "improved"
+                                                            : "same";
+    if (r->what == "accuracy") {
+      out += fmt::format("| {} | accuracy | {:.2g} | {:.2g} | | | | | {}{} |\n", r->cell, r->base_median, r->new_median,
+                         verdict, r->note.empty() ? "" : ": " + r->note);
+      continue;
+    }
+    out += fmt::format("| {} | {} | {} | {} | {:+.1f} % | {} | {} | {} | {}{} |\n", r->cell, r->what,
+                       value(r->base_median), value(r->new_median), 100 * r->change, value(r->base_p99),
+                       value(r->new_p99), r->p_value < 0 ? std::string("n/a") : fmt::format("{:.2g}", r->p_value),
+                       verdict, r->note.empty() ? "" : ": " + r->note);
+  }
+  return out;
+}
+
+}  // namespace shatter

@@ -1,0 +1,74 @@
+#pragma once
+/// `compare`: a new grid result against a baseline, per cell and per stage (docs/compare.md).
+///
+/// Design note: a timing regresses only when two conditions hold, as in asv and Blast: the median
+/// got slower by more than `max_slowdown` (relative, the effect is large enough to matter) AND the
+/// two-sided Mann-Whitney U test on the per-repetition samples gives p < `alpha` (the effect is not
+/// noise). Either alone cries wolf: a threshold alone fails on a noisy runner, a test alone fails on
+/// a 0.5 % change with many samples. Instruction counts are deterministic up to a measured variation
+/// far below any threshold, so in instruction mode the relative threshold alone decides. Accuracy
+/// figures never go through statistics: they regress against fixed tolerances. Improvements are
+/// reported, never failed.
+
+#include "algorithms/core/result.h"
+#include "harness/results/grid_reader.h"
+
+#include <string>
+#include <vector>
+
+namespace shatter {
+
+/// Settings of a comparison.
+struct CompareOptions {
+  double max_slowdown = 0.05;      ///< relative slowdown of a median that can regress, > 0
+  double alpha = 0.01;             ///< significance level of the U test, in (0, 1)
+  std::string metric = "time";     ///< "time" (ms, statistical) or "instructions" (counts, threshold)
+};
+
+/// Tolerances of the accuracy figures (absolute increases that fail).
+struct AccuracyTolerances {
+  double volume_error = 1e-9;      ///< relative volume error may grow by this much
+  double partition_error = 2e-3;   ///< share of sampled points (256 samples: about half a point)
+};
+
+/// What one row of the comparison says.
+enum class Verdict { same, improved, regressed, failed };
+
+/// One row: a cell's worst frame, one of its stages, or its accuracy.
+struct ComparisonRow {
+  std::string cell;                ///< "100 x 25"
+  std::string what;                ///< "worst frame", "stage stress", "accuracy"
+  double base_median = 0.0;        ///< per-repetition medians (ms or instructions)
+  double new_median = 0.0;
+  double change = 0.0;             ///< new / base - 1 (0 when base is 0)
+  double base_p99 = 0.0;           ///< 0.99-quantile (type 7): of every frame for "worst frame", else of the repetitions
+  double new_p99 = 0.0;
+  double p_value = -1.0;           ///< two-sided U test; < 0 when not tested (instructions, accuracy)
+  Verdict verdict = Verdict::same;
+  std::string note;                ///< why, for regressions, failures and skipped tests
+};
+
+/// The whole comparison.
+struct CompareReport {
+  std::vector<ComparisonRow> rows;
+  std::vector<std::string> mismatches;  ///< reasons the results cannot be compared (each fails)
+  std::vector<std::string> warnings;    ///< e.g. too few repetitions for the test to ever fire
+  std::string metric;                   ///< as compared
+
+  /// True when a row regressed or failed, or the results could not be compared.
+  [[nodiscard]] bool failed() const;
+};
+
+/// Checks `options` (error names the flag).
+Status check_compare_options(const CompareOptions& options);
+
+/// Compares `next` against `base`. Mismatches (fingerprint, case, a missing cell, instruction counts
+/// missing in instruction mode) are reported in the report, not as errors.
+CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, const CompareOptions& options,
+                            const AccuracyTolerances& tolerances = {});
+
+/// The report as Markdown (a pull-request comment): mismatches, warnings, a verdict line, and a table
+/// of the rows (regressions and failures first, then improvements, then the rest).
+std::string compare_markdown(const CompareReport& report, const CompareOptions& options);
+
+}  // namespace shatter

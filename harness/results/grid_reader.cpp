@@ -1,0 +1,213 @@
+#include "harness/results/grid_reader.h"
+
+#include "harness/results/grid_report.h"
+
+#include <fmt/core.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace shatter {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+/// A parse failure with the path of the key that failed.
+struct BadKey : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const Json& at(const Json& j, const std::string& key, const std::string& path) {
+  if (!j.is_object()) throw BadKey(path + ": expected an object");
+  const auto it = j.find(key);
+  if (it == j.end()) throw BadKey(path + (path.empty() ? "" : ".") + key + ": missing");
+  return *it;
+}
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+double number(const Json& j, const std::string& key, const std::string& path) {
+  const Json& v = at(j, key, path);
+  if (!v.is_number()) throw BadKey(join(path, key) + ": expected a number");
+  return v.get<double>();
+}
+
+long long integer(const Json& j, const std::string& key, const std::string& path) {
+  const Json& v = at(j, key, path);
+  if (!v.is_number_integer()) throw BadKey(join(path, key) + ": expected an integer");
+  return v.get<long long>();
+}
+
+bool boolean(const Json& j, const std::string& key, const std::string& path) {
+  const Json& v = at(j, key, path);
+  if (!v.is_boolean()) throw BadKey(join(path, key) + ": expected true or false");
+  return v.get<bool>();
+}
+
+std::string text(const Json& j, const std::string& key, const std::string& path) {
+  const Json& v = at(j, key, path);
+  if (!v.is_string()) throw BadKey(join(path, key) + ": expected a string");
+  return v.get<std::string>();
+}
+
+const Json& array(const Json& j, const std::string& key, const std::string& path) {
+  const Json& v = at(j, key, path);
+  if (!v.is_array()) throw BadKey(join(path, key) + ": expected an array");
+  return v;
+}
+
+std::vector<double> numbers(const Json& j, const std::string& key, const std::string& path) {
+  std::vector<double> out;
+  for (const Json& v : array(j, key, path)) {
+    if (!v.is_number()) throw BadKey(join(path, key) + ": expected an array of numbers");
+    out.push_back(v.get<double>());
+  }
+  return out;
+}
+
+StageTimes stages(const Json& j, const std::string& key, const std::string& path) {
+  StageTimes out{};
+  const Json& o = at(j, key, path);
+  for (const Stage s : kAllStages) out[static_cast<std::size_t>(s)] = number(o, std::string(stage_name(s)), join(path, key));
+  return out;
+}
+
+InstructionCounts instructions(const Json& j, const std::string& path) {
+  InstructionCounts c;
+  c.stages = stages(j, "stages", path);
+  c.setup = stages(j, "setup", path);
+  c.frames = numbers(j, "frames", path);
+  c.event = number(j, "event", path);
+  c.worst_frame = number(j, "worst_frame", path);
+  return c;
+}
+
+GridSample sample(const Json& j, const std::string& path) {
+  GridSample s;
+  s.seed = static_cast<std::uint64_t>(integer(j, "seed", path));
+  s.frame_ms = numbers(j, "frame_ms", path);
+  s.event_ms = number(j, "event_ms", path);
+  s.event_frame = static_cast<int>(integer(j, "event_frame", path));
+  s.worst_frame_ms = number(j, "worst_frame_ms", path);
+  s.stages_ms = stages(j, "stages_ms", path);
+  s.setup_ms = stages(j, "setup_ms", path);
+  s.cache_hit = boolean(j, "cache_hit", path);
+  s.fragments = static_cast<int>(integer(j, "fragments", path));
+  s.hit = static_cast<int>(integer(j, "hit", path));
+  s.pieces = static_cast<int>(integer(j, "pieces", path));
+  s.broken_bonds = static_cast<int>(integer(j, "broken_bonds", path));
+  s.falling_clusters = static_cast<int>(integer(j, "falling_clusters", path));
+  s.bodies = static_cast<int>(integer(j, "bodies", path));
+  const Json& solver = at(j, "solver", path);
+  const std::string sp = join(path, "solver");
+  s.solver.solves = static_cast<int>(integer(solver, "solves", sp));
+  s.solver.iterations = static_cast<int>(integer(solver, "iterations", sp));
+  s.solver.converged = boolean(solver, "converged", sp);
+  s.solver.residual = number(solver, "residual", sp);
+  s.solver.unknowns = static_cast<int>(integer(solver, "unknowns", sp));
+  if (j.contains("instructions")) s.instructions = instructions(j.at("instructions"), join(path, "instructions"));
+  return s;
+}
+
+GridCell cell(const Json& j, const std::string& path) {
+  GridCell c;
+  c.prefracture = static_cast<int>(integer(j, "prefracture", path));
+  c.runtime = static_cast<int>(integer(j, "runtime", path));
+  c.prefracturer = text(j, "prefracturer", path);
+  c.fracturer = text(j, "fracturer", path);
+  c.stress = text(j, "stress", path);
+  c.worst_frame_ms = number(j, "worst_frame_ms", path);
+  const Json& f = at(j, "frame_ms", path);
+  const std::string fp = join(path, "frame_ms");
+  c.frame_ms.mean = number(f, "mean", fp);
+  c.frame_ms.median = number(f, "median", fp);
+  c.frame_ms.p95 = number(f, "p95", fp);
+  c.frame_ms.p99 = number(f, "p99", fp);
+  c.frame_ms.max = number(f, "max", fp);
+  c.frame_ms.min = number(f, "min", fp);
+  c.event_ms = number(j, "event_ms", path);
+  c.stages_ms = stages(j, "stages_ms", path);
+  c.setup_ms = stages(j, "setup_ms", path);
+  const Json& e = at(j, "error", path);
+  const std::string ep = join(path, "error");
+  const Json& pre = at(e, "prefracture", ep);
+  const Json& run = at(e, "runtime", ep);
+  const Json& st = at(e, "stress", ep);
+  c.error.prefracture_volume_error = number(pre, "volume_error", ep + ".prefracture");
+  c.error.prefracture_partition_error = number(pre, "partition_error", ep + ".prefracture");
+  c.error.prefracture_all_closed = boolean(pre, "all_closed", ep + ".prefracture");
+  c.error.prefracture_min_fragment_volume = number(pre, "min_fragment_volume", ep + ".prefracture");
+  c.error.runtime_volume_error = number(run, "volume_error", ep + ".runtime");
+  c.error.runtime_partition_error = number(run, "partition_error", ep + ".runtime");
+  c.error.runtime_all_closed = boolean(run, "all_closed", ep + ".runtime");
+  c.error.runtime_min_fragment_volume = number(run, "min_fragment_volume", ep + ".runtime");
+  c.error.solver_converged = boolean(st, "converged", ep + ".stress");
+  c.error.solver_residual = number(st, "residual", ep + ".stress");
+  c.within_budget = boolean(j, "within_budget", path);
+  for (const Json& name : array(j, "stages_run", path)) {
+    if (!name.is_string()) throw BadKey(join(path, "stages_run") + ": expected strings");
+    c.stages_run.push_back(name.get<std::string>());
+  }
+  const Json& skipped = array(j, "stages_skipped", path);
+  for (std::size_t i = 0; i < skipped.size(); ++i) {
+    const std::string sp = fmt::format("{}.stages_skipped[{}]", path, i);
+    c.stages_skipped.push_back({text(skipped[i], "stage", sp), text(skipped[i], "reason", sp)});
+  }
+  const Json& samples = array(j, "samples", path);
+  for (std::size_t i = 0; i < samples.size(); ++i) c.samples.push_back(sample(samples[i], fmt::format("{}.samples[{}]", path, i)));
+  if (c.samples.empty()) throw BadKey(join(path, "samples") + ": no samples");
+  return c;
+}
+
+}  // namespace
+
+Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const std::string& what) {
+  try {
+    StoredGrid out;
+    const long long version = integer(j, "schema_version", "");
+    if (version != kGridSchemaVersion)
+      return Error{fmt::format("{}: schema_version: {} is not supported (this build reads {})", what, version,
+                               kGridSchemaVersion)};
+    Result<RunContext> context = context_from_json(nlohmann::json(at(j, "context", "")));
+    if (!context) return Error{what + ": " + context.error().message};
+    out.context = std::move(*context);
+    out.case_block = at(j, "case", "");
+    out.case_name = text(out.case_block, "name", "case");
+    if (j.contains("metric")) out.metric = text(j, "metric", "");
+    if (out.metric != "time" && out.metric != "instructions")
+      return Error{what + ": metric: expected \"time\" or \"instructions\", got \"" + out.metric + "\""};
+    out.grid.budget_ms = number(j, "budget_ms", "");
+    out.grid.repetitions = static_cast<int>(integer(j, "repetitions", ""));
+    out.grid.frames = static_cast<int>(integer(j, "frames", ""));
+    out.grid.no_skip = boolean(j, "no_skip", "");
+    out.grid.wall_s = number(j, "wall_s", "");
+    if (j.contains("shard")) {
+      out.grid.shard_index = static_cast<int>(integer(j.at("shard"), "index", "shard"));
+      out.grid.shard_count = static_cast<int>(integer(j.at("shard"), "count", "shard"));
+    }
+    const Json& cells = array(j, "cells", "");
+    for (std::size_t i = 0; i < cells.size(); ++i) out.grid.cells.push_back(cell(cells[i], fmt::format("cells[{}]", i)));
+    return out;
+  } catch (const BadKey& e) {
+    return Error{what + ": " + e.what()};
+  }
+}
+
+Result<StoredGrid> read_grid_results(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) return Error{path.string() + ": cannot be read"};
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  Json j;
+  try {
+    j = Json::parse(buffer.str());
+  } catch (const Json::parse_error& e) {
+    return Error{path.string() + ": invalid JSON: " + e.what()};
+  }
+  Result<StoredGrid> out = grid_results_from_json(j, path.string());
+  if (out) out->path = path;
+  return out;
+}
+
+}  // namespace shatter

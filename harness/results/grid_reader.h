@@ -1,0 +1,32 @@
+#pragma once
+/// Reading a grid results JSON (docs/results.md) back, for `compare`, `merge` and `report`.
+
+#include "algorithms/core/result.h"
+#include "harness/grid/grid_runner.h"
+#include "harness/results/run_context.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace shatter {
+
+/// A results file as read.
+struct StoredGrid {
+  std::filesystem::path path;           ///< where it was read from
+  RunContext context;                   ///< its `context`
+  nlohmann::ordered_json case_block;    ///< its `case`, as written
+  std::string case_name;                ///< `case.name`
+  std::string metric = "time";          ///< `metric`: "time" or "instructions"
+  GridResult grid;                      ///< budget, repetitions, frames, cells with samples
+};
+
+/// Reads `path`. Errors name the file and the key ("a.json: cells[3].samples[0].frame_ms: expected an
+/// array of numbers"), for unreadable files, malformed JSON and an unknown `schema_version`.
+Result<StoredGrid> read_grid_results(const std::filesystem::path& path);
+
+/// Parses an already loaded document; `what` names it in errors.
+Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const std::string& what);
+
+}  // namespace shatter

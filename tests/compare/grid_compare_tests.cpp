@@ -1,0 +1,249 @@
+// compare on synthetic results with known samples; merge of shards; the Google Benchmark and JUnit
+// outputs.
+
+#include "algorithms/core/random.h"
+#include "harness/compare/grid_compare.h"
+#include "harness/results/gbench_json.h"
+#include "harness/results/grid_merge.h"
+#include "harness/results/grid_report.h"
+#include "harness/results/junit.h"
+#include "tests/support/cli_runner.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace {
+
+using namespace shatter;
+
+RunContext context() {
+  RunContext c;
+  c.commit = "0123456789ab";
+  c.build_type = "Release";
+  c.compiler = "GNU 12.2.0";
+  c.flags = "-O3 -DNDEBUG";
+  c.cpu_model = "Example CPU";
+  c.cores = 2;
+  c.date = "2026-11-22T07:00:00Z";
+  c.fingerprint = context_fingerprint(c);
+  return c;
+}
+
+/// A grid of two cells whose per-repetition worst frames and stage times are `base_ms` times `scale`
+/// times a noise factor in [1 - noise, 1 + noise] (SplitMix64 `seed`).
+GridResult synthetic(int repetitions, double scale, double noise, std::uint64_t seed) {
+  GridResult g;
+  g.budget_ms = 33.3;
+  g.repetitions = repetitions;
+  g.frames = 4;
+  SplitMix64 rng(seed);
+  for (const int p : {10, 100}) {
+    GridCell c;
+    c.prefracture = p;
+    c.runtime = 25;
+    c.prefracturer = c.fracturer = "plane-slice";
+    c.stress = "von-mises";
+    for (int k = 0; k < repetitions; ++k) {
+      GridSample s;
+      s.seed = static_cast<std::uint64_t>(k + 1);
+      const double f = scale * (1.0 + noise * (2.0 * rng.uniform() - 1.0));
+      s.frame_ms = {0.3 * f, 3.0 * f, 0.4 * f, 0.35 * f};
+      s.worst_frame_ms = 3.0 * f;
+      s.event_ms = 3.0 * f;
+      s.event_frame = 1;
+      s.stages_ms[static_cast<std::size_t>(Stage::stress)] = 1.0 * f;
+      s.stages_ms[static_cast<std::size_t>(Stage::physics)] = 1.2 * f;
+      c.samples.push_back(s);
+    }
+    c.worst_frame_ms = 3.0 * scale;
+    g.cells.push_back(c);
+  }
+  return g;
+}
+
+StoredGrid stored(const GridResult& g, const RunContext& ctx, const std::string& name) {
+  nlohmann::ordered_json case_block = {{"name", "synthetic"}};
+  Result<StoredGrid> s = grid_results_from_json(grid_to_json(g, case_block, ctx), name);
+  REQUIRE(s);
+  s->path = name;
+  return *s;
+}
+
+int count_rows(const CompareReport& r, Verdict v) {
+  int n = 0;
+  for (const ComparisonRow& row : r.rows) n += row.verdict == v ? 1 : 0;
+  return n;
+}
+
+}  // namespace
+
+TEST_CASE("compare: identical results pass", "[compare]") {
+  const StoredGrid a = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
+  const CompareReport r = compare_grids(a, a, {});
+  CHECK_FALSE(r.failed());
+  CHECK(count_rows(r, Verdict::same) == static_cast<int>(r.rows.size()));
+  CHECK(r.warnings.empty());
+}
+
+TEST_CASE("compare: a 20 % slowdown with 10 repetitions is a regression", "[compare]") {
+  const StoredGrid a = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
+  const StoredGrid b = stored(synthetic(10, 1.2, 0.05, 2), context(), "b.json");
+  const CompareReport r = compare_grids(a, b, {});
+  CHECK(r.failed());
+  CHECK(count_rows(r, Verdict::regressed) == 6);  // worst frame, stress, physics in each of 2 cells
+  for (const ComparisonRow& row : r.rows)
+    if (row.verdict == Verdict::regressed) {
+      CHECK(row.change > 0.1);
+      CHECK(row.p_value < 0.01);
+    }
+}
+
+TEST_CASE("compare: noise around the same median passes; an improvement passes and is reported", "[compare]") {
+  const StoredGrid a = stored(synthetic(10, 1.0, 0.15, 1), context(), "a.json");
+  const StoredGrid b = stored(synthetic(10, 1.0, 0.15, 7), context(), "b.json");
+  CHECK_FALSE(compare_grids(a, b, {}).failed());
+  const StoredGrid faster = stored(synthetic(10, 0.7, 0.05, 3), context(), "c.json");
+  const CompareReport r = compare_grids(a, faster, {});
+  CHECK_FALSE(r.failed());
+  CHECK(count_rows(r, Verdict::improved) >= 2);
+  CHECK(compare_markdown(r, {}).find("improved") != std::string::npos);
+}
+
+TEST_CASE("compare: with 3 repetitions no timing regression can be shown, and it says so", "[compare]") {
+  const StoredGrid a = stored(synthetic(3, 1.0, 0.01, 1), context(), "a.json");
+  const StoredGrid b = stored(synthetic(3, 2.0, 0.01, 2), context(), "b.json");
+  const CompareReport r = compare_grids(a, b, {});
+  CHECK_FALSE(r.failed());
+  REQUIRE(r.warnings.size() == 1);
+  CHECK(r.warnings[0].find("9 or more repetitions") != std::string::npos);
+}
+
+TEST_CASE("compare: mismatched fingerprint, case or a missing cell fail with the reason", "[compare]") {
+  const StoredGrid a = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
+  RunContext other = context();
+  other.compiler = "Clang 16";
+  other.fingerprint = context_fingerprint(other);
+  const CompareReport r = compare_grids(a, stored(synthetic(10, 1.0, 0.05, 1), other, "b.json"), {});
+  CHECK(r.failed());
+  REQUIRE(r.mismatches.size() == 1);
+  CHECK(r.mismatches[0].find("fingerprints differ") != std::string::npos);
+
+  GridResult fewer = synthetic(10, 1.0, 0.05, 1);
+  fewer.cells.pop_back();
+  const CompareReport m = compare_grids(a, stored(fewer, context(), "c.json"), {});
+  CHECK(m.failed());
+  CHECK(m.mismatches.at(0).find("cell 100 x 25") != std::string::npos);
+
+  StoredGrid renamed = a;
+  renamed.case_block["name"] = "other";
+  CHECK(compare_grids(a, renamed, {}).mismatches.size() == 1);
+}
+
+TEST_CASE("compare: accuracy regresses against tolerances, not statistics", "[compare]") {
+  const StoredGrid a = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
+  StoredGrid b = a;
+  b.grid.cells[0].error.prefracture_volume_error = 1e-6;
+  b.grid.cells[1].error.runtime_all_closed = false;
+  const CompareReport r = compare_grids(a, b, {});
+  CHECK(r.failed());
+  CHECK(count_rows(r, Verdict::failed) == 2);
+  StoredGrid within = a;
+  within.grid.cells[0].error.prefracture_volume_error = 5e-10;  // below the 1e-9 tolerance
+  CHECK_FALSE(compare_grids(a, within, {}).failed());
+}
+
+TEST_CASE("compare: instruction counts regress on the threshold alone", "[compare]") {
+  GridResult base = synthetic(1, 1.0, 0.0, 1);
+  for (GridCell& c : base.cells)
+    for (GridSample& s : c.samples) {
+      InstructionCounts counts;
+      counts.frames = {1e6, 5e7, 2e6, 2e6};
+      counts.worst_frame = 5e7;
+      counts.stages[static_cast<std::size_t>(Stage::physics)] = 6e6;
+      counts.stages[static_cast<std::size_t>(Stage::stress)] = 4e7;
+      s.instructions = counts;
+    }
+  GridResult slower = base;
+  slower.cells[1].samples[0].instructions->stages[static_cast<std::size_t>(Stage::physics)] *= 1.10;
+  CompareOptions o;
+  o.metric = "instructions";
+  const CompareReport same = compare_grids(stored(base, context(), "a"), stored(base, context(), "b"), o);
+  CHECK_FALSE(same.failed());
+  const CompareReport r = compare_grids(stored(base, context(), "a"), stored(slower, context(), "b"), o);
+  CHECK(r.failed());
+  REQUIRE(count_rows(r, Verdict::regressed) == 1);
+  CHECK(compare_markdown(r, o).find("stage physics") != std::string::npos);
+  // Time-only results cannot be compared on instructions.
+  CHECK(compare_grids(stored(synthetic(3, 1, 0, 1), context(), "t"), stored(base, context(), "b"), o).failed());
+}
+
+TEST_CASE("merge: shards join into the unsharded grid; mismatched shards are refused", "[compare]") {
+  const GridResult whole = synthetic(3, 1.0, 0.05, 1);
+  GridResult s0 = whole, s1 = whole;
+  s0.cells = {whole.cells[0]};
+  s1.cells = {whole.cells[1]};
+  s0.shard_index = 0;
+  s1.shard_index = 1;
+  s0.shard_count = s1.shard_count = 2;
+  Result<StoredGrid> merged = merge_grids({stored(s1, context(), "s1"), stored(s0, context(), "s0")});
+  REQUIRE(merged);
+  REQUIRE(merged->grid.cells.size() == 2);
+  CHECK(merged->grid.cells[0].prefracture == 10);
+  CHECK(merged->grid.cells[1].prefracture == 100);
+  CHECK(merged->grid.cells[1].samples[2].worst_frame_ms == whole.cells[1].samples[2].worst_frame_ms);
+  CHECK_FALSE(merge_grids({stored(s0, context(), "s0"), stored(s0, context(), "s0b")}));  // a cell twice
+  RunContext other = context();
+  other.commit = "ffffffffffff";
+  const auto bad = merge_grids({stored(s0, context(), "s0"), stored(s1, other, "s1")});
+  REQUIRE_FALSE(bad);
+  CHECK(bad.error().message.find("commit") != std::string::npos);
+}
+
+TEST_CASE("gbench output has Google Benchmark's keys", "[compare]") {
+  const auto j = grid_to_gbench_json(synthetic(3, 1.0, 0.05, 1), "synthetic", context());
+  for (const char* key : {"date", "host_name", "executable", "num_cpus", "mhz_per_cpu", "cpu_scaling_enabled", "caches",
+                          "library_build_type"})
+    CHECK(j.at("context").contains(key));
+  int iterations = 0, aggregates = 0;
+  for (const auto& b : j.at("benchmarks")) {
+    for (const char* key : {"name", "run_name", "run_type", "repetitions", "threads", "iterations", "real_time",
+                            "cpu_time", "time_unit"})
+      CHECK(b.contains(key));
+    if (b.at("run_type") == "iteration") {
+      ++iterations;
+      CHECK(b.contains("repetition_index"));
+    } else {
+      ++aggregates;
+      CHECK(b.at("aggregate_name") == "median");
+    }
+  }
+  CHECK(iterations == 2 * 3 * 3);  // 2 cells x (worst frame, stress, physics) x 3 repetitions
+  CHECK(aggregates == 2 * 3);
+  CHECK(j.at("benchmarks")[0].at("name") == "synthetic/10x25/worst_frame");
+}
+
+TEST_CASE("junit: testsuites, counts and a failure element per failed case, escaped", "[compare]") {
+  JunitSuite s{"shatterbench.grid.x", {}};
+  s.cases.push_back({"cell 10 x 5", "shatterbench.grid.x", 0.001, {}});
+  s.cases.push_back({"cell <100> & 25", "shatterbench.grid.x", 0.002, std::string("worst frame 40 ms > budget \"33\"")});
+  const std::string xml = junit_xml({s});
+  CHECK(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>", 0) == 0);
+  CHECK(xml.find("<testsuites tests=\"2\" failures=\"1\">") != std::string::npos);
+  CHECK(xml.find("<testsuite name=\"shatterbench.grid.x\" tests=\"2\" failures=\"1\"") != std::string::npos);
+  CHECK(xml.find("name=\"cell &lt;100&gt; &amp; 25\"") != std::string::npos);
+  CHECK(xml.find("<failure message=\"worst frame 40 ms &gt; budget &quot;33&quot;\">") != std::string::npos);
+  // Every opened element is closed.
+  const auto count = [&](const std::string& t) {
+    std::size_t n = 0;
+    for (auto p = xml.find(t); p != std::string::npos; p = xml.find(t, p + 1)) ++n;
+    return n;
+  };
+  CHECK(count("<testcase ") == 2);
+  CHECK(count("</testcase>") + count("\"/>") == 2);
+  CHECK(count("<testsuite ") == count("</testsuite>"));
+  CHECK(count("<testsuites ") == count("</testsuites>"));
+}
