@@ -65,6 +65,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--max-slowdown", o->compare.max_slowdown, "Relative slowdown of a median that can regress (0.05)");
   cmd->add_option("--alpha", o->compare.alpha, "Significance level of the Mann-Whitney U test (0.01)");
   cmd->add_option("--metric", o->compare.metric, "time (default) or instructions");
+  cmd->add_option("--clock", o->compare.clock, "Time mode: cpu (thread CPU time, default) or wall");
   cmd->add_option("--junit", o->junit, "Write JUnit XML here: one test case per comparison");
   cmd->add_option("--markdown", o->markdown, "Also write the Markdown table to this file");
   cmd->callback([o, &exit_code] { exit_code = run_compare(*o); });

@@ -43,6 +43,7 @@ struct GridCommandOptions {
   std::vector<int> prefracture;
   std::vector<int> runtime;
   bool no_skip = false;
+  bool same_seed = false;
   std::string cache_dir;
   bool no_cache = false;
   std::string format = "shatter";
@@ -126,6 +127,7 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   if (!o.prefracture.empty()) cmd += " --prefracture " + list(o.prefracture);
   if (!o.runtime.empty()) cmd += " --runtime " + list(o.runtime);
   if (o.no_skip) cmd += " --no-skip";
+  if (o.same_seed) cmd += " --same-seed";
   if (o.no_cache) cmd += " --no-cache";
   if (!o.cache_dir.empty()) cmd += " --cache-dir '" + o.cache_dir + "'";
   if (!o.shard.empty()) cmd += " --shard " + o.shard;
@@ -174,6 +176,7 @@ int run_grid_command(const GridCommandOptions& o) {
   options.prefracture = o.prefracture;
   options.runtime = o.runtime;
   options.no_skip = o.no_skip;
+  options.same_seed = o.same_seed;
   if (!o.shard.empty() && !parse_shard(o.shard, options.shard_index, options.shard_count))
     return fail_input("--shard: expected K/N (e.g. 0/4), got \"" + o.shard + "\"");
   if (o.format != "shatter" && o.format != "gbench")
@@ -290,6 +293,8 @@ void add_grid_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--runtime", o->runtime, "Runtime counts, e.g. 5,25 (default: the case's grid)")->delimiter(',');
   cmd->add_option("--shard", o->shard, "Run every N-th cell starting at K (K/N, 0 <= K < N); join with `merge`");
   cmd->add_option("--metric", o->metric, "time (default) or instructions (counted under callgrind, per stage and frame)");
+  cmd->add_flag("--same-seed", o->same_seed,
+                "Every repetition repeats the case's seed (the same workload): for regression gates");
   cmd->add_flag("--no-skip", o->no_skip, "Turn every automatic stage skip off (cache, box culling, partial re-solves)");
   cmd->add_option("--cache-dir", o->cache_dir, "Pre-fracture cache folder (default: $SHATTERBENCH_CACHE, "
                                                "$XDG_CACHE_HOME/shatterbench or ~/.cache/shatterbench)");

@@ -119,6 +119,7 @@ Status check_compare_options(const CompareOptions& o) {
     return Error{fmt::format("--alpha: must be in (0, 1), got {}", o.alpha)};
   if (o.metric != "time" && o.metric != "instructions")
     return Error{"--metric: must be time or instructions, got \"" + o.metric + "\""};
+  if (o.clock != "cpu" && o.clock != "wall") return Error{"--clock: must be cpu or wall, got \"" + o.clock + "\""};
   return {};
 }
 
@@ -150,6 +151,10 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
     out.warnings.push_back(fmt::format("fewer than 9 repetitions ({} and {}): the U test has little power",
                                        base_reps, new_reps));
 
+  if (o.metric == "time" && (!base.grid.same_seed || !next.grid.same_seed))
+    out.warnings.push_back(
+        "repetitions with different seeds fracture differently, so their spread is workload, not noise, and the U "
+        "test loses its power; measure gates with grid --same-seed");
   for (const GridCell& b : base.grid.cells) {
     const auto it = new_cells.find(cell_key(b));
     if (it == new_cells.end()) {
@@ -180,6 +185,17 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
         for (const GridSample& s : n.samples) ns.push_back(s.instructions->stages[static_cast<std::size_t>(st)]);
         if (median_of(bs) == 0.0 && median_of(ns) == 0.0) continue;
         out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)), bs, ns, bs, ns, o));
+      }
+    } else if (o.clock == "cpu") {
+      const std::vector<double> bw = per_rep(b, &GridSample::worst_frame_cpu_ms);
+      const std::vector<double> nw = per_rep(n, &GridSample::worst_frame_cpu_ms);
+      out.rows.push_back(measure_row(name, "worst frame (cpu)", bw, nw, bw, nw, o));
+      for (const Stage st : kAllStages) {
+        std::vector<double> bs, ns;
+        for (const GridSample& s : b.samples) bs.push_back(s.stages_cpu_ms[static_cast<std::size_t>(st)]);
+        for (const GridSample& s : n.samples) ns.push_back(s.stages_cpu_ms[static_cast<std::size_t>(st)]);
+        if (median_of(bs) == 0.0 && median_of(ns) == 0.0) continue;
+        out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)) + " (cpu)", bs, ns, bs, ns, o));
       }
     } else {
       std::vector<double> bf, nf;
@@ -218,7 +234,8 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
   out += fmt::format("**{}**: {} regressed, {} accuracy failures, {} improved, {} rows; metric {}, max slowdown "
                      "{:g} %{}\n\n",
                      report.failed() ? "FAIL" : "PASS", regressed, failed, improved, report.rows.size(), report.metric,
-                     100 * o.max_slowdown, time ? fmt::format(", alpha {:g}", o.alpha) : std::string());
+                     100 * o.max_slowdown,
+                     time ? fmt::format(", alpha {:g}, {} clock", o.alpha, o.clock) : std::string());
   const char* unit = time ? "ms" : "instr.";
   out += fmt::format("| cell | what | base median {0} | new median {0} | change | base p99 {0} | new p99 {0} | p | "
                      "verdict |\n",

@@ -23,6 +23,9 @@ struct CompareOptions {
   double max_slowdown = 0.05;      ///< relative slowdown of a median that can regress, > 0
   double alpha = 0.01;             ///< significance level of the U test, in (0, 1)
   std::string metric = "time";     ///< "time" (ms, statistical) or "instructions" (counts, threshold)
+  /// Time mode: "cpu" (the thread's CPU time per stage and of the frame with the most of it; the
+  /// default, steadier on a shared runner: time spent descheduled does not count) or "wall".
+  std::string clock = "cpu";
 };
 
 /// Tolerances of the accuracy figures (absolute increases that fail).

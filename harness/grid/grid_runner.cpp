@@ -45,8 +45,11 @@ GridSample sample_of(const RunResult& run) {
   s.event_ms = run.event_ms;
   s.event_frame = run.event_frames.empty() ? -1 : run.event_frames.front();
   s.worst_frame_ms = run.frame_ms.empty() ? 0.0 : *std::max_element(run.frame_ms.begin(), run.frame_ms.end());
-  s.stages_ms = run.frame_stage_ms;
-  s.setup_ms = run.setup_ms;
+  s.stages_ms = run.frame_stages.wall;
+  s.setup_ms = run.setup.wall;
+  s.stages_cpu_ms = run.frame_stages.cpu;
+  s.worst_frame_cpu_ms =
+      run.frame_cpu_ms.empty() ? 0.0 : *std::max_element(run.frame_cpu_ms.begin(), run.frame_cpu_ms.end());
   s.cache_hit = run.cache_hit;
   s.fragments = static_cast<int>(run.fragments.size());
   s.hit = static_cast<int>(run.hit.size());
@@ -148,6 +151,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
   out.repetitions = o.repetitions;
   out.frames = o.frames > 0 ? o.frames : c.frames;
   out.no_skip = o.no_skip;
+  out.same_seed = o.same_seed;
   out.shard_index = o.shard_index;
   out.shard_count = o.shard_count;
   int cells_here = 0;
@@ -176,7 +180,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
           run.runtime_fracturer = o.fracturer;
         }
         run.stress_model = o.stress_model;
-        run.repetition = static_cast<std::uint64_t>(rep);
+        run.repetition = o.same_seed ? 0 : static_cast<std::uint64_t>(rep);
         run.frames = out.frames;
         run.no_skip = o.no_skip;
         run.cache = o.cache;

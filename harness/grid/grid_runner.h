@@ -29,6 +29,9 @@ struct GridOptions {
   std::vector<int> prefracture;        ///< pre-fracture counts (empty: the case's grid.prefracture)
   std::vector<int> runtime;            ///< runtime counts (empty: the case's grid.runtime)
   bool no_skip = false;                ///< every automatic skip off (see destruction_run.h)
+  /// Every repetition repeats the case's seed (the same workload) instead of seed + k: what a
+  /// regression gate wants, so that the repetitions differ by noise only (docs/compare.md).
+  bool same_seed = false;
   const PrefractureCache* cache = nullptr;  ///< pre-fracture cache, or none
   int partition_samples = 256;         ///< points of the partition-error tests
   int shard_index = 0;                 ///< run the cells i with i % shard_count == shard_index
@@ -57,6 +60,8 @@ struct GridSample {
   double worst_frame_ms = 0.0;                   ///< the slowest frame
   StageTimes stages_ms{};                        ///< stage times inside frames
   StageTimes setup_ms{};                         ///< offline stage times
+  StageTimes stages_cpu_ms{};                    ///< thread CPU time of the stages inside frames
+  double worst_frame_cpu_ms = 0.0;               ///< thread CPU time of the frame with the most of it
   bool cache_hit = false;                        ///< the pre-fracture came from the cache
   int fragments = 0;                             ///< pre-fracture fragments made
   int hit = 0;                                   ///< fragments the impact fractured
@@ -107,6 +112,7 @@ struct GridResult {
   int repetitions = 0;                 ///< runs per cell
   int frames = 0;                      ///< frames per run
   bool no_skip = false;                ///< automatic skips were off
+  bool same_seed = false;              ///< every repetition used the same seed
   std::vector<GridCell> cells;         ///< pre-fracture major, runtime minor
   double wall_s = 0.0;                 ///< wall time of the whole grid, s
   std::string metric = "time";         ///< "time", or "instructions" when samples carry instruction counts

@@ -23,14 +23,12 @@ bool overlaps(const Aabb& a, const Aabb& b) {
 
 #ifdef SHATTER_PLANTED_SLOWDOWN_SHARE
 /// Test-only planted slowdown (CMake option SHATTER_PLANTED_SLOWDOWN): arithmetic for `share` of the
-/// time the step took. In time mode that is the share of the stage's time; under callgrind, whose
-/// slowdown is about the same per instruction for this loop and for Bullet, about the same share of
-/// its instructions.
-void planted_work(std::chrono::steady_clock::duration took, double share) {
-  const auto until = std::chrono::steady_clock::now() +
-                     std::chrono::duration_cast<std::chrono::steady_clock::duration>(took * share);
+/// thread CPU time the step took. Under callgrind, whose slowdown is about the same per instruction
+/// for this loop and for Bullet, that is about the same share of the stage's instructions.
+void planted_work(double step_cpu_ms, double share) {
+  const double until = thread_cpu_ms() + share * step_cpu_ms;
   volatile std::uint64_t x = 1;
-  while (std::chrono::steady_clock::now() < until)
+  while (thread_cpu_ms() < until)
     for (int i = 0; i < 64; ++i) x = x * 6364136223846793005ULL + 1442695040888963407ULL;
 }
 #endif
@@ -69,7 +67,7 @@ class Run {
   Status settle();
   void make_colliders();
   Status event(int frame, const Impact& impact, int event_index);
-  Status stress_after(std::span<const int> hit, StageTimes& times);
+  Status stress_after(std::span<const int> hit, StageClocks& times);
   std::vector<std::vector<int>> newly_falling();
   void measure_runtime_error(std::span<const int> hit, std::span<const std::vector<Fragment>> pieces);
 
@@ -124,7 +122,7 @@ Status Run::prefracture() {
   }
   r_.prefracture_seed = key.seed;
   {
-    StageTimer timer(r_.setup_ms, Stage::prefracture);
+    StageTimer timer(r_.setup, Stage::prefracture);
     if (o_.cache != nullptr && !o_.no_skip) {
       if (auto cached = o_.cache->load(solid_.mesh, key)) {
         r_.fragments = std::move(*cached);
@@ -175,7 +173,7 @@ Status Run::build_bonds() {
     r_.stages.skipped(Stage::bonds, "not needed (case needs)");
     return {};
   }
-  StageTimer timer(r_.setup_ms, Stage::bonds);
+  StageTimer timer(r_.setup, Stage::bonds);
   SupportGraphSettings settings;
   settings.density = c_.material.density;
   Result<SupportGraph> graph = build_support_graph(r_.fragments, c_.anchors, settings);
@@ -203,7 +201,7 @@ std::vector<std::vector<int>> Run::newly_falling() {
   return out;
 }
 
-Status Run::stress_after(std::span<const int> hit, StageTimes& times) {
+Status Run::stress_after(std::span<const int> hit, StageClocks& times) {
   if (!plan_.stress) {
     r_.stages.skipped(Stage::stress, "not needed (case needs)");
     return {};
@@ -243,8 +241,8 @@ Status Run::stress_after(std::span<const int> hit, StageTimes& times) {
 Status Run::settle() {
   // The structure under its own weight before anything hits it: what cannot stand breaks and falls now.
   if (plan_.bonds) {
-    if (Status s = stress_after({}, r_.setup_ms); !s) return s;
-    StageTimer timer(r_.setup_ms, Stage::falling_clusters);
+    if (Status s = stress_after({}, r_.setup); !s) return s;
+    StageTimer timer(r_.setup, Stage::falling_clusters);
     for (std::vector<int>& cluster : newly_falling()) {
       for (const int f : cluster) standing_[static_cast<std::size_t>(f)] = 0;
       r_.falling_clusters.push_back(std::move(cluster));
@@ -265,7 +263,7 @@ void Run::make_colliders() {
     r_.stages.skipped(Stage::physics, "not needed (case needs)");
     return;
   }
-  StageTimer timer(r_.setup_ms, Stage::colliders);
+  StageTimer timer(r_.setup, Stage::colliders);
   PhysicsSettings settings;
   settings.gravity = c_.gravity;
   settings.ground = true;
@@ -319,7 +317,7 @@ void Run::measure_runtime_error(std::span<const int> hit, std::span<const std::v
 }
 
 Status Run::event(int frame, const Impact& impact, int event_index) {
-  StageTimes& t = r_.frame_stage_ms;
+  StageClocks& t = r_.frame_stages;
   std::vector<int> hit;
   std::vector<std::vector<Fragment>> pieces;
   {
@@ -413,9 +411,11 @@ Result<RunResult> Run::execute() {
 
   const int frames = o_.frames > 0 ? o_.frames : c_.frames;
   r_.frame_ms.assign(static_cast<std::size_t>(frames), 0.0);
+  r_.frame_cpu_ms.assign(static_cast<std::size_t>(frames), 0.0);
   int event_index = 0;
   for (int frame = 0; frame < frames; ++frame) {
     instruction_marks::set_frame(frame);
+    const double cpu_start = thread_cpu_ms();
     const auto start = std::chrono::steady_clock::now();
     bool event_frame = false;
     for (const ImpactEvent& e : c_.impacts) {
@@ -425,17 +425,18 @@ Result<RunResult> Run::execute() {
       if (Status s = event(frame, e.impact, event_index++); !s) return s.error();
     }
     if (world_ && plan_.physics) {
-      StageTimer timer(r_.frame_stage_ms, Stage::physics);
+      StageTimer timer(r_.frame_stages, Stage::physics);
 #ifdef SHATTER_PLANTED_SLOWDOWN_SHARE
-      const auto step_start = std::chrono::steady_clock::now();
+      const double step_start = thread_cpu_ms();
       world_->step();
-      planted_work(std::chrono::steady_clock::now() - step_start, SHATTER_PLANTED_SLOWDOWN_SHARE);
+      planted_work(thread_cpu_ms() - step_start, SHATTER_PLANTED_SLOWDOWN_SHARE);
 #else
       world_->step();
 #endif
     }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     r_.frame_ms[static_cast<std::size_t>(frame)] = ms;
+    r_.frame_cpu_ms[static_cast<std::size_t>(frame)] = thread_cpu_ms() - cpu_start;
     if (event_frame) {
       if (r_.event_frames.empty()) r_.event_ms = ms;
       r_.event_frames.push_back(frame);

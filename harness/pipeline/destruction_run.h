@@ -80,8 +80,9 @@ struct RunResult {
   std::vector<double> frame_ms;             ///< wall time of each frame
   std::vector<int> event_frames;            ///< frames in which an impact landed, ascending
   double event_ms = 0.0;                    ///< time of the first event frame (0 without impacts)
-  StageTimes setup_ms{};                    ///< offline stage times (before frame 0)
-  StageTimes frame_stage_ms{};              ///< stage times inside frames, summed over the frames
+  std::vector<double> frame_cpu_ms;         ///< thread CPU time of each frame
+  StageClocks setup;                        ///< offline stage times (before frame 0), wall and CPU
+  StageClocks frame_stages;                 ///< stage times inside frames, summed over the frames
   StageLog stages;                          ///< what ran and what was skipped, and why
   bool cache_hit = false;                   ///< the pre-fracture came from the cache
 

@@ -1,6 +1,7 @@
 #include "harness/pipeline/stage.h"
 
 #include <algorithm>
+#include <ctime>
 
 namespace shatter {
 
@@ -16,6 +17,12 @@ std::string_view stage_name(Stage stage) {
     case Stage::physics: return "physics";
   }
   return "unknown";
+}
+
+double thread_cpu_ms() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return 1e3 * static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_nsec);
 }
 
 void StageLog::ran(Stage stage) { ran_[static_cast<std::size_t>(stage)] = true; }

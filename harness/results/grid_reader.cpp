@@ -92,6 +92,9 @@ GridSample sample(const Json& j, const std::string& path) {
   s.worst_frame_ms = number(j, "worst_frame_ms", path);
   s.stages_ms = stages(j, "stages_ms", path);
   s.setup_ms = stages(j, "setup_ms", path);
+  const Json& cpu = at(j, "cpu", path);
+  s.worst_frame_cpu_ms = number(cpu, "worst_frame_ms", join(path, "cpu"));
+  s.stages_cpu_ms = stages(cpu, "stages_ms", join(path, "cpu"));
   s.cache_hit = boolean(j, "cache_hit", path);
   s.fragments = static_cast<int>(integer(j, "fragments", path));
   s.hit = static_cast<int>(integer(j, "hit", path));
@@ -181,6 +184,7 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
     out.grid.repetitions = static_cast<int>(integer(j, "repetitions", ""));
     out.grid.frames = static_cast<int>(integer(j, "frames", ""));
     out.grid.no_skip = boolean(j, "no_skip", "");
+    out.grid.same_seed = boolean(j, "same_seed", "");
     out.grid.wall_s = number(j, "wall_s", "");
     if (j.contains("shard")) {
       out.grid.shard_index = static_cast<int>(integer(j.at("shard"), "index", "shard"));

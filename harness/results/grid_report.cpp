@@ -60,6 +60,7 @@ Json sample_json(const GridSample& s) {
           {"worst_frame_ms", s.worst_frame_ms},
           {"stages_ms", stages_json(s.stages_ms)},
           {"setup_ms", stages_json(s.setup_ms)},
+          {"cpu", {{"worst_frame_ms", s.worst_frame_cpu_ms}, {"stages_ms", stages_json(s.stages_cpu_ms)}}},
           {"cache_hit", s.cache_hit},
           {"fragments", s.fragments},
           {"hit", s.hit},
@@ -126,7 +127,8 @@ nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::orde
               {"budget_ms", grid.budget_ms},
               {"repetitions", grid.repetitions},
               {"frames", grid.frames},
-              {"no_skip", grid.no_skip}};
+              {"no_skip", grid.no_skip},
+              {"same_seed", grid.same_seed}};
   if (grid.shard_count > 1) out["shard"] = {{"index", grid.shard_index}, {"count", grid.shard_count}};
   out["passed"] = grid.passed();
   out["wall_s"] = grid.wall_s;

@@ -40,6 +40,7 @@ GridResult synthetic(int repetitions, double scale, double noise, std::uint64_t 
   g.budget_ms = 33.3;
   g.repetitions = repetitions;
   g.frames = 4;
+  g.same_seed = true;
   SplitMix64 rng(seed);
   for (const int p : {10, 100}) {
     GridCell c;
@@ -57,6 +58,8 @@ GridResult synthetic(int repetitions, double scale, double noise, std::uint64_t 
       s.event_frame = 1;
       s.stages_ms[static_cast<std::size_t>(Stage::stress)] = 1.0 * f;
       s.stages_ms[static_cast<std::size_t>(Stage::physics)] = 1.2 * f;
+      s.worst_frame_cpu_ms = 2.9 * f;
+      s.stages_cpu_ms = s.stages_ms;
       c.samples.push_back(s);
     }
     c.worst_frame_ms = 3.0 * scale;
@@ -87,19 +90,26 @@ TEST_CASE("compare: identical results pass", "[compare]") {
   CHECK_FALSE(r.failed());
   CHECK(count_rows(r, Verdict::same) == static_cast<int>(r.rows.size()));
   CHECK(r.warnings.empty());
+  StoredGrid varied = a;
+  varied.grid.same_seed = false;  // repetitions of different workloads: warned about
+  REQUIRE(compare_grids(varied, varied, {}).warnings.size() == 1);
 }
 
-TEST_CASE("compare: a 20 % slowdown with 10 repetitions is a regression", "[compare]") {
+TEST_CASE("compare: a 20 % slowdown with 10 repetitions is a regression, on either clock", "[compare]") {
   const StoredGrid a = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
   const StoredGrid b = stored(synthetic(10, 1.2, 0.05, 2), context(), "b.json");
-  const CompareReport r = compare_grids(a, b, {});
-  CHECK(r.failed());
-  CHECK(count_rows(r, Verdict::regressed) == 6);  // worst frame, stress, physics in each of 2 cells
-  for (const ComparisonRow& row : r.rows)
-    if (row.verdict == Verdict::regressed) {
-      CHECK(row.change > 0.1);
-      CHECK(row.p_value < 0.01);
-    }
+  for (const char* clock : {"cpu", "wall"}) {
+    CompareOptions o;
+    o.clock = clock;
+    const CompareReport r = compare_grids(a, b, o);
+    CHECK(r.failed());
+    CHECK(count_rows(r, Verdict::regressed) == 6);  // worst frame, stress, physics in each of 2 cells
+    for (const ComparisonRow& row : r.rows)
+      if (row.verdict == Verdict::regressed) {
+        CHECK(row.change > 0.1);
+        CHECK(row.p_value < 0.01);
+      }
+  }
 }
 
 TEST_CASE("compare: noise around the same median passes; an improvement passes and is reported", "[compare]") {
