@@ -24,5 +24,9 @@ void add_stress_command(CLI::App& app, int& exit_code);
 void add_grid_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
 void add_table_command(CLI::App& app, int& exit_code);
+/// `shatterbench accuracy`.
+void add_accuracy_command(CLI::App& app, int& exit_code);
+/// `shatterbench report`.
+void add_report_command(CLI::App& app, int& exit_code);
 
 }  // namespace shatter::cli

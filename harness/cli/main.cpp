@@ -17,6 +17,8 @@ int main(int argc, char** argv) {
   add_stress_command(app, exit_code);
   add_grid_command(app, exit_code);
   add_table_command(app, exit_code);
+  add_accuracy_command(app, exit_code);
+  add_report_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -1,0 +1,56 @@
+#include "harness/report/stage_bars_plot.h"
+
+#include "harness/report/gnuplot_runner.h"
+#include "harness/results/atomic_file.h"
+
+#include <fmt/core.h>
+
+#include <vector>
+
+namespace shatter {
+
+Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& case_name, int frames,
+                                    const std::filesystem::path& folder, const std::string& stem) {
+  if (cell.stages_ms.empty()) return Error{"cell " + std::to_string(cell.prefracture) + " x " +
+                                           std::to_string(cell.runtime) + ": stages_ms is empty"};
+  // One row per bar, one column per stage (the median's stage order); a stage missing from a
+  // repetition counts 0.
+  std::string data = "bar";
+  for (const auto& [stage, ms] : cell.stages_ms) data += " " + stage;
+  data += "\n";
+  const auto row = [&](const std::string& label, const StageTimes& times) {
+    data += "\"" + label + "\"";
+    for (const auto& [stage, ignored] : cell.stages_ms) {
+      double ms = 0.0;
+      for (const auto& [name, value] : times)
+        if (name == stage) ms = value;
+      data += fmt::format(" {:.6g}", ms);
+    }
+    data += "\n";
+  };
+  row("median", cell.stages_ms);
+  for (std::size_t k = 0; k < cell.sample_stages_ms.size(); ++k) row(fmt::format("run {}", k + 1), cell.sample_stages_ms[k]);
+
+  const std::string image = stem + ".png";
+  const std::string over = frames > 0 ? fmt::format("summed over {} frames", frames) : "summed over the frames";
+  std::string script;
+  script += "set terminal pngcairo noenhanced size 900,520 font \"Sans,10\"\n";
+  script += fmt::format("set output \"{}\"\n", image);
+  script += fmt::format("set title \"{} cell {} x {} ({}{}): time per stage, {}\"\n", gnuplot_quote(case_name),
+                        cell.prefracture, cell.runtime, gnuplot_quote(cell.fracturer),
+                        cell.stress.empty() ? "" : ", " + gnuplot_quote(cell.stress), over);
+  script += "set ylabel \"time (ms)\"\nset yrange [0:*]\nset grid ytics\n";
+  script += "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n";
+  script += "set boxwidth 0.6\nset key outside right top vertical title \"stage\"\nset xtics scale 0\n";
+  script += "set linetype 1 lc rgb \"#4e79a7\"\nset linetype 2 lc rgb \"#f28e2b\"\nset linetype 3 lc rgb \"#e15759\"\n"
+            "set linetype 4 lc rgb \"#76b7b2\"\nset linetype 5 lc rgb \"#59a14f\"\nset linetype 6 lc rgb \"#edc948\"\n"
+            "set linetype 7 lc rgb \"#b07aa1\"\nset linetype 8 lc rgb \"#9c755f\"\nset linetype 9 lc rgb \"#bab0ac\"\n";
+  script += fmt::format("plot for [i=2:{}] \"{}.dat\" using i:xtic(1) title columnheader(i)\n", cell.stages_ms.size() + 1,
+                        stem);
+  if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
+  if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
+  if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();
+  return image;
+}
+
+}  // namespace shatter
