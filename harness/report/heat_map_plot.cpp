@@ -50,7 +50,7 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
   std::string script;
   script += fmt::format("set terminal pngcairo noenhanced size {},{} font \"Sans,10\"\n", width, height);
   script += fmt::format("set output \"{}\"\n", image);
-  script += fmt::format("set title \"{}: worst frame per cell (ms) against the budget of {:g} ms; {} of {} cells over (framed, !)\"\n",
+  script += fmt::format("set title \"{}: worst frame per cell (ms), budget {:g} ms\\n{} of {} cells over the budget (red, framed, !)\"\n",
                         gnuplot_quote(grid.case_name), b, over, grid.cells.size());
   script += "set xlabel \"runtime fragments\"\nset ylabel \"pre-fracture fragments\"\n";
   script += fmt::format("set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n", columns.size() - 0.5, rows.size() - 0.5);

@@ -31,12 +31,23 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
     return *p.error > 0.0 ? *p.error : floor;
   };
 
+  // Short point labels: "25", "25 r8", "32 cg 1e-06", "32 cg cap 10".
+  const auto short_knob = [](std::string k) {
+    const std::pair<const char*, const char*> replacements[] = {
+        {"fragments=", ""}, {" resolution=", " r"}, {"slabs=", ""}, {" solver=default", ""},
+        {"solver=default", "default"}, {" solver=cg tol=1e-12 cap=", " cg cap "}, {" solver=cg tol=", " cg "},
+        {" cap=20000", ""}};
+    for (const auto& [from, to] : replacements)
+      for (std::size_t at = k.find(from); at != std::string::npos; at = k.find(from, at + std::string(to).size()))
+        k.replace(at, std::string(from).size(), to);
+    return k;
+  };
   // One data block per algorithm (index a), then the front sorted by time (last index).
   std::string data;
   for (const std::string& a : algorithms) {
     data += "# " + a + "\n";
     for (const AccuracyPoint* p : shown)
-      if (p->algorithm == a) data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), p->knob);
+      if (p->algorithm == a) data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), p->pareto ? "" : short_knob(p->knob));
     data += "\n\n";
   }
   std::vector<const AccuracyPoint*> front;
@@ -45,7 +56,7 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   std::sort(front.begin(), front.end(), [](const AccuracyPoint* a, const AccuracyPoint* b) { return a->time_ms < b->time_ms; });
   data += "# Pareto front\n";
   for (const AccuracyPoint* p : front) {
-    std::string label = p->algorithm + " " + p->knob;
+    std::string label = p->algorithm + " " + short_knob(p->knob);
     data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), label);
   }
   if (front.empty()) data += "NaN NaN \"\"\n";
@@ -54,14 +65,14 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   std::string script;
   script += "set terminal pngcairo noenhanced size 1000,640 font \"Sans,10\"\n";
   script += fmt::format("set output \"{}\"\n", image);
-  script += fmt::format("set title \"{} on {}: time against error, Pareto front dashed{}\"\n", family,
+  script += fmt::format("set title \"{} on {}: time against error, Pareto front dashed and labelled in bold{}\\npoint labels: knob (fragments, r = fem-lite resolution; slabs, cg = CG tolerance or iteration cap)\"\n", family,
                         gnuplot_quote(case_name),
                         floored ? fmt::format(" (error 0 drawn at {:.0e})", floor) : std::string());
   script += "set logscale xy\nset format y \"%.0e\"\nset grid\nset key outside right top\n";
   script += "set xlabel \"time (ms, median of the repetitions)\"\n";
   script += family == "fracture" ? "set ylabel \"replay error (relative volume mismatch)\"\n"
                                  : "set ylabel \"error (relative, against the reference)\"\n";
-  script += "set offsets graph 0.05, graph 0.3, graph 0.1, graph 0.1\n";
+  script += "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n";
   script += "set linetype 1 lc rgb \"#4e79a7\" pt 7\nset linetype 2 lc rgb \"#e15759\" pt 5\n"
             "set linetype 3 lc rgb \"#59a14f\" pt 9\nset linetype 4 lc rgb \"#b07aa1\" pt 11\n"
             "set linetype 5 lc rgb \"#f28e2b\" pt 13\n";
@@ -69,9 +80,12 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   for (std::size_t a = 0; a < algorithms.size(); ++a)
     script += fmt::format("  \"{}.dat\" index {} using 1:2 with points lt {} ps 1.6 title \"{}\", \\\n", stem, a, a + 1,
                           gnuplot_quote(algorithms[a]));
+  for (std::size_t a = 0; a < algorithms.size(); ++a)
+    script += fmt::format("  \"{}.dat\" index {} using 1:2:3 with labels left offset 0.7,-0.5 font \"Sans,7\" tc rgb \"#777777\" notitle, \\\n",
+                          stem, a);
   const std::size_t f = algorithms.size();
   script += fmt::format("  \"{}.dat\" index {} using 1:2 with steps lc rgb \"black\" dt 2 lw 1.5 title \"Pareto front\", \\\n", stem, f);
-  script += fmt::format("  \"{}.dat\" index {} using 1:2:3 with labels left offset 0.8,0.6 font \"Sans,8\" notitle\n", stem, f);
+  script += fmt::format("  \"{}.dat\" index {} using 1:2:3 with labels left offset 0.8,0.6 font \"Sans Bold,8\" notitle\n", stem, f);
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
   if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();

@@ -13,14 +13,23 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
                                     const std::filesystem::path& folder, const std::string& stem) {
   if (cell.stages_ms.empty()) return Error{"cell " + std::to_string(cell.prefracture) + " x " +
                                            std::to_string(cell.runtime) + ": stages_ms is empty"};
+  // Stages that took no time in any bar (skipped or not needed) are left out of the chart.
+  StageTimes stages;
+  for (const auto& [stage, ms] : cell.stages_ms) {
+    bool used = ms > 0.0;
+    for (const StageTimes& run : cell.sample_stages_ms)
+      for (const auto& [name, value] : run) used = used || (name == stage && value > 0.0);
+    if (used) stages.emplace_back(stage, ms);
+  }
+  if (stages.empty()) stages = cell.stages_ms;
   // One row per bar, one column per stage (the median's stage order); a stage missing from a
   // repetition counts 0.
   std::string data = "bar";
-  for (const auto& [stage, ms] : cell.stages_ms) data += " " + stage;
+  for (const auto& [stage, ms] : stages) data += " " + stage;
   data += "\n";
   const auto row = [&](const std::string& label, const StageTimes& times) {
     data += "\"" + label + "\"";
-    for (const auto& [stage, ignored] : cell.stages_ms) {
+    for (const auto& [stage, ignored] : stages) {
       double ms = 0.0;
       for (const auto& [name, value] : times)
         if (name == stage) ms = value;
@@ -45,7 +54,7 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
   script += "set linetype 1 lc rgb \"#4e79a7\"\nset linetype 2 lc rgb \"#f28e2b\"\nset linetype 3 lc rgb \"#e15759\"\n"
             "set linetype 4 lc rgb \"#76b7b2\"\nset linetype 5 lc rgb \"#59a14f\"\nset linetype 6 lc rgb \"#edc948\"\n"
             "set linetype 7 lc rgb \"#b07aa1\"\nset linetype 8 lc rgb \"#9c755f\"\nset linetype 9 lc rgb \"#bab0ac\"\n";
-  script += fmt::format("plot for [i=2:{}] \"{}.dat\" using i:xtic(1) title columnheader(i)\n", cell.stages_ms.size() + 1,
+  script += fmt::format("plot for [i=2:{}] \"{}.dat\" using i:xtic(1) title columnheader(i)\n", stages.size() + 1,
                         stem);
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
