@@ -55,8 +55,8 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
   script += "set xlabel \"runtime fragments\"\nset ylabel \"pre-fracture fragments\"\n";
   script += fmt::format("set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n", columns.size() - 0.5, rows.size() - 0.5);
   script += fmt::format("set xtics ({}) scale 0\nset ytics ({}) scale 0\n", xtics, ytics);
-  script += fmt::format("set cbrange [0:{:.6g}]\nset cblabel \"worst frame (ms); budget {:g} ms\"\n", top, b);
-  script += fmt::format("set cbtics add (\"budget\" {:.6g})\n", b);
+  script += fmt::format("set cbrange [0:{:.6g}]\nset cblabel \"worst frame (ms)\"\nset rmargin 14\n", top);
+  script += fmt::format("set cbtics add (\"budget {:g}\" {:.6g})\n", b, b);
   script += fmt::format(
       "set palette defined (0 \"#1a9850\", {0:.6g} \"#a6d96a\", {1:.6g} \"#fee08b\", {2:.6g} \"#fdae61\", {2:.6g} \"#e34a33\", {3:.6g} \"#b30000\")\n",
       0.4 * b, 0.75 * b, b, top);

@@ -24,7 +24,7 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
   if (stages.empty()) stages = cell.stages_ms;
   // One row per bar, one column per stage (the median's stage order); a stage missing from a
   // repetition counts 0.
-  std::string data = "bar";
+  std::string data = "# bar";
   for (const auto& [stage, ms] : stages) data += " " + stage;
   data += "\n";
   const auto row = [&](const std::string& label, const StageTimes& times) {
@@ -50,12 +50,16 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
                         cell.stress.empty() ? "" : ", " + gnuplot_quote(cell.stress), over);
   script += "set ylabel \"time (ms)\"\nset yrange [0:*]\nset grid ytics\n";
   script += "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n";
-  script += "set boxwidth 0.6\nset key outside right top vertical title \"stage\"\nset xtics scale 0\n";
+  script += "set boxwidth 0.6\nset key outside right top vertical title \"stage (median)\"\nset xtics scale 0\n";
   script += "set linetype 1 lc rgb \"#4e79a7\"\nset linetype 2 lc rgb \"#f28e2b\"\nset linetype 3 lc rgb \"#e15759\"\n"
             "set linetype 4 lc rgb \"#76b7b2\"\nset linetype 5 lc rgb \"#59a14f\"\nset linetype 6 lc rgb \"#edc948\"\n"
             "set linetype 7 lc rgb \"#b07aa1\"\nset linetype 8 lc rgb \"#9c755f\"\nset linetype 9 lc rgb \"#bab0ac\"\n";
-  script += fmt::format("plot for [i=2:{}] \"{}.dat\" using i:xtic(1) title columnheader(i)\n", stages.size() + 1,
-                        stem);
+  // The legend gives each stage's median: a stage far smaller than the largest is a sliver in the bars.
+  script += "plot";
+  for (std::size_t i = 0; i < stages.size(); ++i)
+    script += fmt::format("{} \"{}.dat\" using {}{} title \"{} ({:.3g} ms)\"", i ? ", \\\n    " : "", stem, i + 2,
+                          i ? "" : ":xtic(1)", gnuplot_quote(stages[i].first), stages[i].second);
+  script += "\n";
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
   if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();
