@@ -42,24 +42,44 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
         k.replace(at, std::string(from).size(), to);
     return k;
   };
-  // One data block per algorithm (index a), then the front sorted by time (last index).
-  std::string data;
-  for (const std::string& a : algorithms) {
-    data += "# " + a + "\n";
-    for (const AccuracyPoint* p : shown)
-      if (p->algorithm == a) data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), p->pareto ? "" : short_knob(p->knob));
-    data += "\n\n";
-  }
+  // Labels that would print over one already placed (closer than about a label's size on the log
+  // axes) are left out; front labels are placed first and always kept, alternately above and below.
+  std::vector<std::pair<double, double>> placed;
+  const auto crowded = [&](double t, double e) {
+    for (const auto& [pt, pe] : placed)
+      if (std::abs(std::log10(t / pt)) < 0.12 && std::abs(std::log10(e / pe)) < 0.25) return true;
+    return false;
+  };
   std::vector<const AccuracyPoint*> front;
   for (const AccuracyPoint* p : shown)
     if (p->pareto) front.push_back(p);
   std::sort(front.begin(), front.end(), [](const AccuracyPoint* a, const AccuracyPoint* b) { return a->time_ms < b->time_ms; });
-  data += "# Pareto front\n";
-  for (const AccuracyPoint* p : front) {
-    std::string label = p->algorithm + " " + short_knob(p->knob);
-    data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), label);
+  std::string front_data = "# Pareto front: time error label label_x label_y\n";
+  for (std::size_t i = 0; i < front.size(); ++i) {
+    const AccuracyPoint& p = *front[i];
+    const double ly = i % 2 == 0 ? y(p) * 1.6 : y(p) / 1.9;
+    front_data += fmt::format("{:.6g} {:.6g} \"{} {}\" {:.6g} {:.6g}\n", p.time_ms, y(p), p.algorithm,
+                              short_knob(p.knob), p.time_ms * 1.06, ly);
+    placed.emplace_back(p.time_ms, y(p));
   }
-  if (front.empty()) data += "NaN NaN \"\"\n";
+  if (front.empty()) front_data += "NaN NaN \"\" NaN NaN\n";
+
+  // One data block per algorithm (index a), then the front sorted by time (last index).
+  std::string data;
+  for (const std::string& a : algorithms) {
+    data += "# " + a + "\n";
+    for (const AccuracyPoint* p : shown) {
+      if (p->algorithm != a) continue;
+      std::string label;
+      if (!p->pareto && !crowded(p->time_ms, y(*p))) {
+        label = short_knob(p->knob);
+        placed.emplace_back(p->time_ms, y(*p));
+      }
+      data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), label);
+    }
+    data += "\n\n";
+  }
+  data += front_data;
 
   const std::string image = stem + ".png";
   std::string script;
@@ -85,7 +105,7 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
                           stem, a);
   const std::size_t f = algorithms.size();
   script += fmt::format("  \"{}.dat\" index {} using 1:2 with steps lc rgb \"black\" dt 2 lw 1.5 title \"Pareto front\", \\\n", stem, f);
-  script += fmt::format("  \"{}.dat\" index {} using 1:2:3 with labels left offset 0.8,0.6 font \"Sans Bold,8\" notitle\n", stem, f);
+  script += fmt::format("  \"{}.dat\" index {} using 4:5:3 with labels left font \"Sans Bold,8\" notitle\n", stem, f);
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
   if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();
