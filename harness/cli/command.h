@@ -28,5 +28,9 @@ void add_compare_command(CLI::App& app, int& exit_code);
 void add_merge_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
 void add_table_command(CLI::App& app, int& exit_code);
+/// `shatterbench accuracy`.
+void add_accuracy_command(CLI::App& app, int& exit_code);
+/// `shatterbench report`.
+void add_report_command(CLI::App& app, int& exit_code);
 
 }  // namespace shatter::cli

@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   add_compare_command(app, exit_code);
   add_merge_command(app, exit_code);
   add_table_command(app, exit_code);
+  add_accuracy_command(app, exit_code);
+  add_report_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

@@ -1,0 +1,115 @@
+#include "harness/accuracy/fracture_accuracy.h"
+
+#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
+#include "algorithms/register_all.h"
+#include "harness/accuracy/fracture_replay.h"
+#include "harness/metrics/fracture_metrics.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <limits>
+#include <memory>
+
+namespace shatter {
+namespace {
+
+/// One fracturer at one knob setting.
+struct Setting {
+  std::unique_ptr<Fracturer> fracturer;
+  int fragments = 0;
+  std::optional<int> resolution;  // fem-lite only
+};
+
+AccuracyPoint measure(const std::string& case_name, const Solid& solid, const std::optional<Impact>& impact,
+                      const Setting& s, const FractureAccuracyOptions& options) {
+  AccuracyPoint p;
+  p.family = "fracture";
+  p.case_name = case_name;
+  p.algorithm = std::string(s.fracturer->name());
+  p.knobs = {{"fragments", s.fragments}};
+  p.knob = fmt::format("fragments={}", s.fragments);
+  if (s.resolution) {
+    p.knobs["resolution"] = *s.resolution;
+    p.knob += fmt::format(" resolution={}", *s.resolution);
+  }
+  FractureParams params;
+  params.fragments = s.fragments;
+  params.seed = 1;
+  params.impact = impact;
+
+  std::vector<Fragment> fragments;
+  for (int rep = 0; rep < options.repetitions; ++rep) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Result<std::vector<Fragment>> out = s.fracturer->fracture(solid.mesh, params);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (!out) {
+      p.time_ms = std::numeric_limits<double>::quiet_NaN();
+      p.figures = {{"failed", out.error().message}};
+      return p;
+    }
+    p.samples_ms.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
+    if (rep == 0) fragments = std::move(*out);
+  }
+  p.time_ms = median_of(p.samples_ms);
+
+  FractureMetricsOptions metrics_options;
+  metrics_options.partition_samples = options.partition_samples;
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, s.fragments, metrics_options);
+  p.figures = {{"fragments", m.fragment_count},
+               {"volume_error", m.volume_error},
+               {"partition_error", m.partition_error},
+               {"partition_samples", m.partition_samples},
+               {"area_error", m.area_error},
+               {"all_closed", m.all_closed},
+               {"min_fragment_volume", m.min_fragment_volume}};
+  Result<std::vector<Fragment>> exact = exact_replay(*s.fracturer, solid.mesh, params);
+  if (!exact) {
+    p.figures["failed"] = "exact replay: " + exact.error().message;
+    return p;
+  }
+  const ReplayMismatch r = replay_mismatch(fragments, *exact);
+  p.figures["replay_fragments"] = r.exact_count;
+  p.figures["replay_volume_error"] = r.max_relative_volume;
+  p.figures["replay_unpaired_volume"] = r.unpaired_volume;
+  p.error = std::max(r.max_relative_volume, r.unpaired_volume);
+  return p;
+}
+
+}  // namespace
+
+std::vector<std::string> default_accuracy_fracturers() {
+  std::vector<std::string> out;
+  for (const std::string& name : registries().fracturers.names())
+    if (name != "cgal-clip") out.push_back(name);
+  return out;
+}
+
+Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_name, const Solid& solid,
+                                                     const std::optional<Impact>& impact,
+                                                     const FractureAccuracyOptions& options) {
+  const std::vector<std::string> names =
+      options.fracturers.empty() ? default_accuracy_fracturers() : options.fracturers;
+  std::vector<AccuracyPoint> points;
+  for (const std::string& name : names) {
+    for (const int n : options.fragments) {
+      if (name == "fem-lite") {
+        for (const int resolution : options.fem_resolutions) {
+          FemLiteSettings settings;
+          settings.resolution = resolution;
+          Setting s{std::make_unique<FemLiteFracturer>(settings), n, resolution};
+          points.push_back(measure(case_name, solid, impact, s, options));
+        }
+        continue;
+      }
+      Result<std::unique_ptr<Fracturer>> f = registries().fracturers.create(name);
+      if (!f) return f.error();
+      Setting s{std::move(*f), n, std::nullopt};
+      points.push_back(measure(case_name, solid, impact, s, options));
+    }
+  }
+  return points;
+}
+
+}  // namespace shatter

@@ -1,0 +1,31 @@
+#pragma once
+/// A fracturer's output against the exact CGAL replay of the same cuts (cgal-clip): plane-slice's cut
+/// schedule, voronoi's bisector cells, fem-lite's crack planes.
+
+#include "algorithms/core/result.h"
+#include "algorithms/fracture/fracturer.h"
+
+#include <vector>
+
+namespace shatter {
+
+/// The exact replay of what `fracturer` does to `solid` with `params`: cgal-clip's fracture (the same
+/// schedule as plane-slice), fracture_by_cells on the bisector cells of voronoi's sites, or
+/// fracture_by_planes on fem-lite's crack planes. Error for a fracturer with no replay (its name).
+Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const Mesh& solid, const FractureParams& params);
+
+/// How far fragments are from their exact replay.
+struct ReplayMismatch {
+  /// Largest |V_fast - V_exact| / V_exact over the fragments paired by nearest centroid (each exact
+  /// fragment used once); dimensionless.
+  double max_relative_volume = 0.0;
+  /// Volume of the fragments left unpaired (either side) over the exact total; 0 when the counts agree.
+  double unpaired_volume = 0.0;
+  int fast_count = 0;   ///< fragments of the fracturer
+  int exact_count = 0;  ///< fragments of the replay
+};
+
+/// Pairs `fast` with `exact` greedily by nearest centroid (in `fast` order) and measures the mismatch.
+ReplayMismatch replay_mismatch(const std::vector<Fragment>& fast, const std::vector<Fragment>& exact);
+
+}  // namespace shatter

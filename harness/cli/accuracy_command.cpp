@@ -1,0 +1,142 @@
+#include "algorithms/fracture/fracture_limits.h"
+#include "algorithms/fracture/fem_lite/fem_lite_settings.h"
+#include "algorithms/register_all.h"
+#include "harness/accuracy/accuracy_output.h"
+#include "harness/accuracy/fracture_accuracy.h"
+#include "harness/accuracy/stress_accuracy.h"
+#include "harness/cases/case_library.h"
+#include "harness/cases/case_mesh.h"
+#include "harness/cli/command.h"
+#include "harness/results/atomic_file.h"
+#include "harness/results/run_context.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <system_error>
+#include <vector>
+
+namespace shatter::cli {
+namespace {
+
+struct AccuracyOptions {
+  std::vector<std::string> cases = {"elephant", "wall", "cantilever", "column", "fixed-beam"};
+  std::string json;
+  int repetitions = 3;
+  std::vector<std::string> families = {"fracture", "stress"};
+  std::vector<std::string> fracturers;
+  std::vector<std::string> models;
+  std::vector<int> fragments = {5, 25, 100};
+  std::vector<int> resolutions = {8, 16, 32};
+  std::vector<int> slabs = {8, 16, 32, 64};
+};
+
+bool wants(const std::vector<std::string>& families, const char* family) {
+  return std::find(families.begin(), families.end(), family) != families.end();
+}
+
+int run_accuracy(const AccuracyOptions& o) {
+  // Everything is checked before anything runs, so bad input writes nothing.
+  for (const std::string& f : o.families)
+    if (f != "fracture" && f != "stress") return fail_input("--family: must be fracture or stress, got '" + f + "'");
+  for (const std::string& name : o.fracturers) {
+    if (name == "cgal-clip") return fail_input("--fracturer: cgal-clip is the exact reference the others are measured against");
+    if (auto f = registries().fracturers.create(name); !f) return fail_input("--fracturer: " + f.error().message);
+  }
+  for (const std::string& name : o.models)
+    if (auto m = registries().stress_models.create(name); !m) return fail_input("--model: " + m.error().message);
+  for (const int r : o.resolutions)
+    if (r < 2 || r > kFemLiteMaxResolution)
+      return fail_input(fmt::format("--resolution: must be in [2, {}], got {}", kFemLiteMaxResolution, r));
+  for (const int n : o.slabs)
+    if (n < 2 || n % 2 != 0 || n > 4096) return fail_input(fmt::format("--slabs: must be even, 2 to 4096, got {}", n));
+  std::vector<Case> cases;
+  for (const std::string& name : o.cases) {
+    Result<Case> c = find_case(name);
+    if (!c) return fail_input("--case: " + c.error().message);
+    cases.push_back(std::move(*c));
+  }
+  std::filesystem::path json_path;
+  if (!o.json.empty()) {
+    json_path = o.json;
+    if (std::filesystem::is_directory(json_path)) return fail_input("--json: " + o.json + " is a folder, not a file");
+    const std::filesystem::path parent = json_path.parent_path();
+    if (!parent.empty() && !std::filesystem::is_directory(parent))
+      return fail_input("--json: folder " + parent.string() + " does not exist");
+  }
+
+  const auto start = std::chrono::steady_clock::now();
+  FractureAccuracyOptions fo;
+  fo.fracturers = o.fracturers;
+  fo.fragments = o.fragments;
+  fo.fem_resolutions = o.resolutions;
+  fo.repetitions = o.repetitions;
+  StressAccuracyOptions so;
+  so.models = o.models;
+  so.slabs = o.slabs;
+  const int largest_slabs = *std::max_element(o.slabs.begin(), o.slabs.end());
+  so.solver_slabs = largest_slabs >= 32 ? 32 : largest_slabs;
+  so.repetitions = 10 * o.repetitions;  // a stress evaluation takes well under a millisecond: time it more often
+
+  std::vector<AccuracyPoint> points;
+  std::vector<std::string> names;
+  for (const Case& c : cases) {
+    names.push_back(c.name);
+    // Explicit planes make a fixed structure (the analytic beams): only its stress is measured.
+    if (wants(o.families, "fracture") && !c.prefracture.explicit_planes()) {
+      Result<Solid> solid = build_case_solid(c);
+      if (!solid) return fail_input(solid.error().message);
+      std::optional<Impact> impact;
+      if (!c.impacts.empty()) impact = c.impacts.front().impact;
+      Result<std::vector<AccuracyPoint>> p = fracture_accuracy(c.name, *solid, impact, fo);
+      if (!p) return fail_input(p.error().message);
+      points.insert(points.end(), p->begin(), p->end());
+    }
+    if (wants(o.families, "stress")) {
+      Result<std::vector<AccuracyPoint>> p = stress_accuracy(c, so);
+      if (!p) return fail_input(p.error().message);
+      points.insert(points.end(), p->begin(), p->end());
+    }
+  }
+  // Fracture rows first, then stress, each in run order.
+  std::stable_sort(points.begin(), points.end(),
+                   [](const AccuracyPoint& a, const AccuracyPoint& b) { return a.family < b.family; });
+  mark_pareto_front(points);
+  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  std::cout << accuracy_to_markdown(points) << std::flush;
+  if (!json_path.empty()) {
+    const std::string json = accuracy_to_json(points, names, o.repetitions, wall_s, current_context()).dump(1) + "\n";
+    if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
+  }
+  return exit_ok;
+}
+
+}  // namespace
+
+void add_accuracy_command(CLI::App& app, int& exit_code) {
+  auto o = std::make_shared<AccuracyOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "accuracy", "Time every fracturer and stress model over its knobs against its error; mark the Pareto front");
+  cmd->add_option("--case", o->cases, "Case files or built-in names (default: elephant wall cantilever column fixed-beam)");
+  cmd->add_option("--json", o->json, "Write the accuracy results JSON here (docs/results.md)");
+  cmd->add_option("--repetitions", o->repetitions, "Timed runs per fracture point (stress points: 10 x); the median is reported")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--family", o->families, "Families to run: fracture, stress (default both)");
+  cmd->add_option("--fracturer", o->fracturers, "Fracturers (default: every registered one but cgal-clip)");
+  cmd->add_option("--model", o->models, "Stress models (default: every registered one)");
+  cmd->add_option("--fragments", o->fragments, "Requested fragment counts")
+      ->check(CLI::Range(1, kMaxFragments))
+      ->capture_default_str();
+  cmd->add_option("--resolution", o->resolutions, "fem-lite grid resolutions")->capture_default_str();
+  cmd->add_option("--slabs", o->slabs, "Slab counts of the analytic beam and column cases (even)")->capture_default_str();
+  cmd->callback([o, &exit_code] { exit_code = run_accuracy(*o); });
+}
+
+}  // namespace shatter::cli

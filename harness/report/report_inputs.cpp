@@ -1,0 +1,166 @@
+#include "harness/report/report_inputs.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+namespace shatter {
+namespace {
+
+using Json = nlohmann::json;
+
+/// A key check failed: the message is "<key path>: <what>".
+struct KeyError {
+  std::string message;
+};
+
+const Json& at(const Json& object, const std::string& key, const std::string& path) {
+  if (!object.is_object()) throw KeyError{path + ": expected an object"};
+  const auto it = object.find(key);
+  if (it == object.end()) throw KeyError{(path.empty() ? key : path + "." + key) + ": missing required key"};
+  return *it;
+}
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+
+double number(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (!v.is_number() || !std::isfinite(v.get<double>())) throw KeyError{join(path, key) + ": expected a finite number"};
+  return v.get<double>();
+}
+
+std::optional<double> number_or_null(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (v.is_null()) return std::nullopt;
+  return number(object, key, path);
+}
+
+int integer(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (!v.is_number_integer()) throw KeyError{join(path, key) + ": expected an integer"};
+  return v.get<int>();
+}
+
+std::string text(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (!v.is_string()) throw KeyError{join(path, key) + ": expected a string"};
+  return v.get<std::string>();
+}
+
+bool boolean(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (!v.is_boolean()) throw KeyError{join(path, key) + ": expected true or false"};
+  return v.get<bool>();
+}
+
+const Json& array(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (!v.is_array() || v.empty()) throw KeyError{join(path, key) + ": expected a non-empty array"};
+  return v;
+}
+
+StageTimes stages(const Json& object, const std::string& key, const std::string& path) {
+  const Json& v = at(object, key, path);
+  if (!v.is_object()) throw KeyError{join(path, key) + ": expected an object"};
+  StageTimes out;
+  for (const auto& [name, value] : v.items()) {
+    if (!value.is_number() || !std::isfinite(value.get<double>()))
+      throw KeyError{join(join(path, key), name) + ": expected a finite number"};
+    out.emplace_back(name, value.get<double>());
+  }
+  return out;
+}
+
+ReportGrid read_grid(const Json& j, const std::string& file) {
+  ReportGrid g;
+  g.file = file;
+  g.case_name = text(at(j, "case", ""), "name", "case");
+  g.budget_ms = number(j, "budget_ms", "");
+  if (j.contains("frames")) g.frames = integer(j, "frames", "");
+  const Json& cells = array(j, "cells", "");
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const std::string path = fmt::format("cells[{}]", i);
+    const Json& c = cells[i];
+    ReportCell cell;
+    cell.prefracture = integer(c, "prefracture", path);
+    cell.runtime = integer(c, "runtime", path);
+    cell.worst_frame_ms = number(c, "worst_frame_ms", path);
+    cell.within_budget = boolean(c, "within_budget", path);
+    cell.stages_ms = stages(c, "stages_ms", path);
+    if (c.contains("fracturer")) cell.fracturer = text(c, "fracturer", path);
+    if (c.contains("stress")) cell.stress = text(c, "stress", path);
+    if (c.contains("samples")) {
+      const Json& samples = array(c, "samples", path);
+      for (std::size_t k = 0; k < samples.size(); ++k)
+        cell.sample_stages_ms.push_back(stages(samples[k], "stages_ms", fmt::format("{}.samples[{}]", path, k)));
+    }
+    g.cells.push_back(std::move(cell));
+  }
+  return g;
+}
+
+ReportAccuracy read_accuracy(const Json& j, const std::string& file) {
+  ReportAccuracy a;
+  a.file = file;
+  const Json& points = array(j, "points", "");
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const std::string path = fmt::format("points[{}]", i);
+    const Json& e = points[i];
+    AccuracyPoint p;
+    p.family = text(e, "family", path);
+    if (p.family != "fracture" && p.family != "stress") throw KeyError{path + ".family: expected fracture or stress"};
+    p.case_name = text(e, "case", path);
+    p.algorithm = text(e, "algorithm", path);
+    p.knob = text(e, "knob", path);
+    p.time_ms = number_or_null(e, "time_ms", path).value_or(std::numeric_limits<double>::quiet_NaN());
+    p.error = number_or_null(e, "error", path);
+    p.pareto = boolean(e, "pareto", path);
+    if (e.contains("knobs")) p.knobs = e["knobs"];
+    if (e.contains("figures")) {
+      if (!e["figures"].is_object()) throw KeyError{path + ".figures: expected an object"};
+      p.figures = e["figures"];
+    }
+    a.points.push_back(std::move(p));
+  }
+  return a;
+}
+
+}  // namespace
+
+Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
+  ReportInputs inputs;
+  for (const std::string& file : files) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) return Error{file + ": cannot read"};
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    Json j;
+    try {
+      j = Json::parse(buffer.str());
+    } catch (const Json::parse_error& e) {
+      return Error{file + ": invalid JSON: " + e.what()};
+    }
+    try {
+      if (!j.is_object()) throw KeyError{"top level: expected an object"};
+      if (j.contains("cells")) {
+        inputs.grids.push_back(read_grid(j, file));
+      } else if (j.contains("points") || j.value("kind", "") == "accuracy") {
+        inputs.accuracies.push_back(read_accuracy(j, file));
+      } else {
+        throw KeyError{"cells: missing (not a grid results file), and no points (not an accuracy results file)"};
+      }
+    } catch (const KeyError& e) {
+      return Error{file + ": " + e.message};
+    } catch (const Json::exception& e) {
+      return Error{file + ": " + e.what()};
+    }
+  }
+  return inputs;
+}
+
+}  // namespace shatter

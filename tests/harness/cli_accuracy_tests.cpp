@@ -1,0 +1,113 @@
+// `shatterbench accuracy`: finite errors on a short run, the cantilever at round-off, bad input.
+
+#include "tests/support/cli_runner.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+namespace {
+
+using shatter::test::run_cli;
+using shatter::test::slurp;
+
+std::filesystem::path scratch(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / "shatter_accuracy_tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace
+
+TEST_CASE("cli: accuracy short fracture run gives finite errors against the exact replay", "[cli][accuracy]") {
+  const auto json = scratch("fracture") / "accuracy.json";
+  const auto r = run_cli("accuracy --case wall --family fracture --fracturer plane-slice voronoi fem-lite "
+                         "--fragments 5 --resolution 16 --repetitions 1 --json " + json.string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("## fracture") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(json));
+  REQUIRE(j.at("kind") == "accuracy");
+  REQUIRE(j.at("points").size() == 3);
+  int front = 0;
+  for (const auto& p : j.at("points")) {
+    INFO(p.dump());
+    REQUIRE(p.at("family") == "fracture");
+    REQUIRE(p.at("error").is_number());
+    CHECK(std::isfinite(p.at("error").get<double>()));
+    CHECK(p.at("error").get<double>() < 1e-6);  // the fast kernels replay exactly, up to round-off
+    CHECK(p.at("figures").at("volume_error").get<double>() < 1e-6);
+    CHECK(p.at("figures").at("all_closed").get<bool>());
+    CHECK(p.at("time_ms").get<double>() > 0.0);
+    front += p.at("pareto").get<bool>() ? 1 : 0;
+  }
+  CHECK(front >= 1);
+}
+
+TEST_CASE("cli: accuracy stress errors of the cantilever are at round-off", "[cli][accuracy][stress]") {
+  const auto json = scratch("cantilever") / "accuracy.json";
+  const auto r = run_cli("accuracy --case cantilever --family stress --model von-mises tresca connection-count "
+                         "--slabs 8 16 --repetitions 1 --json " + json.string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(json));
+  int direct = 0;
+  for (const auto& p : j.at("points")) {
+    INFO(p.dump());
+    REQUIRE(p.at("family") == "stress");
+    REQUIRE(p.at("figures").at("reference") == "cantilever");
+    if (p.at("algorithm") == "connection-count") {
+      CHECK(p.at("error").is_null());  // no forces
+      continue;
+    }
+    if (p.at("knobs").at("solver") != "default") continue;
+    ++direct;
+    CHECK(p.at("error").get<double>() < 1e-9);
+    CHECK(p.at("figures").at("first_bond_match").get<bool>());  // the root bond carries the most
+  }
+  CHECK(direct == 4);  // 2 models x 2 slab counts
+}
+
+TEST_CASE("cli: accuracy fixed-fixed beam error falls with the slab count", "[cli][accuracy][stress]") {
+  const auto json = scratch("fixed") / "a.json";
+  const auto r = run_cli("accuracy --case fixed-beam --family stress --model von-mises --slabs 8 16 --repetitions 1 "
+                         "--json " + json.string());
+  REQUIRE(r.exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(json));
+  double e8 = 0, e16 = 0;
+  for (const auto& p : j.at("points"))
+    if (p.at("knobs").at("solver") == "default")
+      (p.at("knobs").at("slabs") == 8 ? e8 : e16) = p.at("error").get<double>();
+  CHECK(e8 == Approx(0.0313).epsilon(0.05));  // mid-span 2 / n^2 (docs/stress.md)
+  CHECK(e16 < e8 / 3.0);
+}
+
+TEST_CASE("cli: accuracy refuses bad input with exit 2, one line, and writes nothing", "[cli][accuracy]") {
+  const auto dir = scratch("bad");
+  const auto json = dir / "a.json";
+  const std::string out = " --repetitions 1 --json " + json.string();
+  const std::pair<std::string, std::string> cases[] = {
+      {"accuracy --case no-such-case" + out, "no-such-case"},
+      {"accuracy --case cantilever --model no-such-model" + out, "--model"},
+      {"accuracy --case wall --fracturer no-such-algo" + out, "--fracturer"},
+      {"accuracy --case wall --fracturer cgal-clip" + out, "--fracturer"},
+      {"accuracy --case wall --family physics" + out, "--family"},
+      {"accuracy --case cantilever --slabs 7" + out, "--slabs"},
+      {"accuracy --case wall --resolution 1" + out, "--resolution"},
+      {"accuracy --case wall --repetitions 0 --json " + json.string(), "--repetitions"},
+      {"accuracy --case wall --no-such-flag" + out, "no-such-flag"},
+  };
+  for (const auto& [args, words] : cases) {
+    INFO(args);
+    const auto r = run_cli(args);
+    CHECK(r.exit_code == 2);
+    CHECK(shatter::test::line_count(r.err) == 1);
+    CHECK(r.err.find(words) != std::string::npos);
+    CHECK(r.out.empty());
+    CHECK_FALSE(std::filesystem::exists(json));
+  }
+}
