@@ -70,6 +70,7 @@ Result<PropagationResult> propagate(const StressModel& model, const SupportGraph
     accumulate(out.report, current->report);
   }
   out.result = std::move(current.value());
+  out.result.solver_state.reset();  // the model's reusable work ends with the cascade (it can be large)
   std::vector<std::uint8_t> broken(graph.bonds.size());
   for (std::size_t i = 0; i < broken.size(); ++i) broken[i] = out.result.bonds[i].broken ? 1 : 0;
   out.result.falling_clusters = falling_clusters(graph_components(graph, broken));

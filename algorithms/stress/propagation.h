@@ -6,8 +6,8 @@
 /// applied at once, so no bond is privileged by the order of a loop). After a round only the
 /// components holding an end of a newly broken bond are re-solved; the model warm-starts them from the
 /// previous displacements (iterative solver) or refactorises them (direct solver: a break changes the
-/// matrix; see docs/stress.md, section 5, for why no factor is reused yet). Components without an anchor are falling clusters
-/// and are never solved.
+/// matrix; the ordering and symbolic factor of the intact graph are reused, docs/stress.md section 3a).
+/// Components without an anchor are falling clusters and are never solved.
 
 #include "algorithms/stress/stress_model.h"
 

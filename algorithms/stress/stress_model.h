@@ -3,7 +3,8 @@
 /// clusters that have lost every path to an anchor.
 ///
 /// Design note: a model is stateless; the state of a cascade (which bonds are broken, the last
-/// displacements for a warm start) lives in the StressResult, which `reevaluate` takes back. That keeps
+/// displacements for a warm start, and whatever solver work the model reuses between rounds, e.g. a
+/// matrix ordering) lives in the StressResult, which `reevaluate` takes back. That keeps
 /// one model object usable from several pipelines and makes "only the affected component is re-solved"
 /// a property the caller can check: components with no touched node are copied from the previous
 /// result bit for bit.
@@ -12,6 +13,7 @@
 #include "algorithms/core/result.h"
 #include "algorithms/stress/material.h"
 
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -53,12 +55,22 @@ struct SolverReport {
   int unknowns = 0;               ///< largest system size solved, #DOF
 };
 
+/// Work a model keeps between the evaluations of one cascade (e.g. the ordering and symbolic factor of
+/// the intact graph's stiffness). Opaque to callers; the model checks it fits the graph before use.
+class StressSolverState {
+ public:
+  virtual ~StressSolverState() = default;
+};
+
 /// The outcome of one evaluation.
 struct StressResult {
   std::vector<BondStress> bonds;                  ///< #bonds, same order as SupportGraph::bonds
   std::vector<std::vector<int>> falling_clusters; ///< fragment indices of each component with no anchor
   std::vector<double> displacements;              ///< 6 #nodes: translation (m) and rotation (rad) per node
   SolverReport report;                            ///< solver statistics
+  /// The model's reusable solver work, handed on to the result of `reevaluate` (shared, not copied;
+  /// may be null). Results sharing it must not be re-evaluated concurrently.
+  std::shared_ptr<StressSolverState> solver_state;
 };
 
 /// A stress model. Implementations are stateless and thread-compatible.

@@ -11,48 +11,8 @@ namespace shatter {
 
 namespace {
 
-using Matrix6 = Eigen::Matrix<double, 6, 6>;
-using Vector6 = Eigen::Matrix<double, 6, 1>;
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Vector = Eigen::VectorXd;
-
-Eigen::Matrix3d skew(const Vec3& r) {
-  Eigen::Matrix3d s;
-  s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
-  return s;
-}
-
-/// Spring constants of a bond in its frame: (k_n, k_s, k_s) and (k_t, k_b1, k_b2).
-struct BondStiffness {
-  Eigen::Matrix3d frame;     // columns n, axis_1, axis_2
-  Vec3 translational;        // N/m
-  Vec3 rotational;           // N m/rad
-};
-
-BondStiffness bond_stiffness(const Bond& e, const Material& m) {
-  // Second moments are floored at 1e-8 A^2 (a square has A^2 / 12): a sliver contact still resists
-  // every rotation a little, so the matrix stays positive definite.
-  const double floor = 1e-8 * e.area * e.area;
-  const double e_over_l = m.young_modulus / e.length;
-  const double g_over_l = m.shear_modulus() / e.length;
-  BondStiffness k;
-  k.frame.col(0) = e.normal;
-  k.frame.col(1) = e.axis_1;
-  k.frame.col(2) = e.axis_2;
-  k.translational = Vec3(e_over_l * e.area, g_over_l * e.area, g_over_l * e.area);
-  k.rotational = Vec3(g_over_l * std::max(e.polar_moment, 2.0 * floor), e_over_l * std::max(e.moment_1, floor),
-                      e_over_l * std::max(e.moment_2, floor));
-  return k;
-}
-
-/// Maps a node's 6 unknowns to the bond's relative motion (delta, phi): +1 for b, -1 for a.
-Matrix6 motion_map(const Vec3& lever, double sign) {
-  Matrix6 b = Matrix6::Zero();
-  b.topLeftCorner<3, 3>() = sign * Eigen::Matrix3d::Identity();
-  b.topRightCorner<3, 3>() = -sign * skew(lever);  // theta x r = -[r]x theta
-  b.bottomRightCorner<3, 3>() = sign * Eigen::Matrix3d::Identity();
-  return b;
-}
 
 }  // namespace
 
@@ -131,23 +91,15 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
     }
   };
 
-  std::vector<Matrix6> maps(bonds.size() * 2);
-  std::vector<Matrix6> springs(bonds.size());
+  std::vector<BondSpring> springs(bonds.size());
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
-    const BondStiffness k = bond_stiffness(e, material);
-    Matrix6 d = Matrix6::Zero();
-    d.topLeftCorner<3, 3>() = k.frame * k.translational.asDiagonal() * k.frame.transpose();
-    d.bottomRightCorner<3, 3>() = k.frame * k.rotational.asDiagonal() * k.frame.transpose();
-    springs[q] = d;
-    maps[2 * q] = motion_map(e.centroid - graph.nodes[static_cast<std::size_t>(e.a)].centroid, -1.0);
-    maps[2 * q + 1] = motion_map(e.centroid - graph.nodes[static_cast<std::size_t>(e.b)].centroid, +1.0);
+    springs[q] = bond_spring(graph, bonds[q], material);
+    const Matrix6* maps[2] = {&springs[q].map_a, &springs[q].map_b};
     const int ends[2] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
     for (int x = 0; x < 2; ++x)
       for (int y = 0; y < 2; ++y)
-        if (ends[x] >= 0 && ends[y] >= 0)
-          add_block(ends[y], ends[x], maps[2 * q + static_cast<std::size_t>(y)].transpose() * d *
-                                          maps[2 * q + static_cast<std::size_t>(x)]);
+        if (ends[x] >= 0 && ends[y] >= 0) add_block(ends[y], ends[x], maps[y]->transpose() * springs[q].stiffness * *maps[x]);
   }
 
   Vector f(n), u(n);
@@ -174,21 +126,8 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
   // Bond forces: the spring forces from the relative motion, expressed in the bond frame.
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
-    Vector6 motion = Vector6::Zero();
-    for (int end = 0; end < 2; ++end) {
-      const int v = end == 0 ? e.a : e.b;
-      const Vector6 ue = Eigen::Map<const Vector6>(displacements.data() + 6 * static_cast<std::size_t>(v));
-      motion += maps[2 * q + static_cast<std::size_t>(end)] * ue;
-    }
-    const Vector6 spring = springs[q] * motion;  // force and moment b receives is minus this
-    BondForces& out = forces[static_cast<std::size_t>(bonds[q])];
-    const Vec3 force = spring.head<3>(), moment = spring.tail<3>();
-    out.normal = force.dot(e.normal);
-    out.shear_1 = force.dot(e.axis_1);
-    out.shear_2 = force.dot(e.axis_2);
-    out.torsion = moment.dot(e.normal);
-    out.moment_1 = moment.dot(e.axis_1);
-    out.moment_2 = moment.dot(e.axis_2);
+    forces[static_cast<std::size_t>(bonds[q])] = bond_forces(e, springs[q], displacements.data() + 6 * static_cast<std::size_t>(e.a),
+                                                             displacements.data() + 6 * static_cast<std::size_t>(e.b));
   }
   return report;
 }

@@ -15,6 +15,7 @@
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/stress/material.h"
+#include "algorithms/stress/rigid_body_spring/bond_spring.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/stress_model.h"
 
@@ -22,16 +23,6 @@
 #include <vector>
 
 namespace shatter {
-
-/// Internal forces of one bond, in its frame; the forces b receives from a are minus these.
-struct BondForces {
-  double normal = 0.0;                ///< N, + tension
-  double shear_1 = 0.0;               ///< N, along axis_1
-  double shear_2 = 0.0;               ///< N, along axis_2
-  double torsion = 0.0;               ///< N m, about the normal
-  double moment_1 = 0.0;              ///< N m, bending about axis_1
-  double moment_2 = 0.0;              ///< N m, bending about axis_2
-};
 
 /// External force and moment (about the centroid) on every node: 6 #nodes, N and N m.
 std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, const Material& material);

@@ -1,9 +1,12 @@
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 
 #include "algorithms/bonds/graph_components.h"
+#include "algorithms/stress/rigid_body_spring/cascade_solver.h"
 
 #include <algorithm>
+#include <memory>
 #include <numeric>
+#include <optional>
 
 namespace shatter {
 
@@ -36,30 +39,53 @@ Result<StressResult> StrengthCriterionModel::reevaluate(const SupportGraph& grap
   out.displacements = has_previous ? previous.displacements : std::vector<double>(6 * graph.nodes.size(), 0.0);
   out.falling_clusters = falling_clusters(components);
 
+  // Components solved now: anchored ones holding a touched node (all of them without a previous
+  // result). Falling clusters are never solved; the other anchored ones keep their previous stresses.
+  std::vector<std::uint8_t> solve(components.nodes.size(), 0);
+  for (std::size_t c = 0; c < components.nodes.size(); ++c) {
+    if (!components.anchored[c]) {
+      for (const int v : components.nodes[c]) std::fill_n(out.displacements.begin() + 6 * static_cast<std::ptrdiff_t>(v), 6, 0.0);
+    } else if (dirty[c] || !has_previous) {
+      solve[c] = 1;
+    } else {
+      for (const int b : components.bonds[c]) out.bonds[static_cast<std::size_t>(b)] = previous.bonds[static_cast<std::size_t>(b)];
+    }
+  }
+
   const std::vector<double> f = node_loads(graph, loads, material);
   std::vector<BondForces> forces(graph.bonds.size());
-  for (std::size_t c = 0; c < components.nodes.size(); ++c) {
-    const std::vector<int>& nodes = components.nodes[c];
-    const std::vector<int>& bonds = components.bonds[c];
-    if (!components.anchored[c]) {
-      // Free fall: no static stress, and the singular system is never assembled.
-      for (const int v : nodes) std::fill_n(out.displacements.begin() + 6 * static_cast<std::ptrdiff_t>(v), 6, 0.0);
-      continue;
+  std::optional<SolverReport> report;
+  if (!settings_.reference) {
+    // The first solve of a graph goes per component (a single evaluation stays bit for bit what it
+    // was); the result carries a cascade solver, built and used from the next round on while it fits
+    // (same graph, material, settings).
+    auto state = std::dynamic_pointer_cast<CascadeSolver>(previous.solver_state);
+    if (state && state->fits(graph, material, settings_)) {
+      report = state->solve(graph, components, broken, solve, f, out.displacements, forces);
+    } else {
+      state = std::make_shared<CascadeSolver>(graph, material, settings_);
     }
-    if (!dirty[c] && has_previous) {
-      for (const int b : bonds) out.bonds[static_cast<std::size_t>(b)] = previous.bonds[static_cast<std::size_t>(b)];
-      continue;
-    }
-    const SolverReport r = solve_component(graph, nodes, bonds, f, material, settings_, out.displacements, forces);
-    out.report.solves += r.solves;
-    out.report.iterations += r.iterations;
-    out.report.converged = out.report.converged && r.converged;
-    out.report.residual = std::max(out.report.residual, r.residual);
-    out.report.unknowns = std::max(out.report.unknowns, r.unknowns);
-    for (const int b : bonds)
-      out.bonds[static_cast<std::size_t>(b)] = bond_stress(graph.bonds[static_cast<std::size_t>(b)],
-                                                           forces[static_cast<std::size_t>(b)], material, criterion_);
+    out.solver_state = std::move(state);
   }
+  if (!report) {
+    report = SolverReport{};
+    for (std::size_t c = 0; c < components.nodes.size(); ++c) {
+      if (!solve[c]) continue;
+      const SolverReport r = solve_component(graph, components.nodes[c], components.bonds[c], f, material, settings_,
+                                             out.displacements, forces);
+      report->solves += r.solves;
+      report->iterations += r.iterations;
+      report->converged = report->converged && r.converged;
+      report->residual = std::max(report->residual, r.residual);
+      report->unknowns = std::max(report->unknowns, r.unknowns);
+    }
+  }
+  out.report = *report;
+  for (std::size_t c = 0; c < components.nodes.size(); ++c)
+    if (solve[c])
+      for (const int b : components.bonds[c])
+        out.bonds[static_cast<std::size_t>(b)] = bond_stress(graph.bonds[static_cast<std::size_t>(b)],
+                                                             forces[static_cast<std::size_t>(b)], material, criterion_);
   return out;
 }
 

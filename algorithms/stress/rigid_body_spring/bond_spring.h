@@ -1,0 +1,41 @@
+#pragma once
+/// One bond's spring in global axes: the 6 x 6 stiffness of the zero-length spring at the bond centroid
+/// and the maps from its end nodes' unknowns to the relative motion across it (spring_system.h has
+/// the model). Shared by the per-component assembly and the whole-graph one (graph_stiffness.h), so
+/// both build K from the same numbers.
+
+#include "algorithms/bonds/support_graph.h"
+#include "algorithms/stress/material.h"
+
+#include <Eigen/Core>
+
+namespace shatter {
+
+/// Internal forces of one bond, in its frame; the forces b receives from a are minus these.
+struct BondForces {
+  double normal = 0.0;                ///< N, + tension
+  double shear_1 = 0.0;               ///< N, along axis_1
+  double shear_2 = 0.0;               ///< N, along axis_2
+  double torsion = 0.0;               ///< N m, about the normal
+  double moment_1 = 0.0;              ///< N m, bending about axis_1
+  double moment_2 = 0.0;              ///< N m, bending about axis_2
+};
+
+/// 6 x 6 matrix of the rigid-body-spring model (translation first, then rotation).
+using Matrix6 = Eigen::Matrix<double, 6, 6>;
+
+/// A bond's spring: relative motion (delta, phi) = map_a u_a + map_b u_b, spring force and moment
+/// b receives = -stiffness (delta, phi).
+struct BondSpring {
+  Matrix6 stiffness;   ///< N/m and N m/rad, block-diagonal (translation, rotation), global axes
+  Matrix6 map_a;       ///< node a's 6 unknowns -> relative motion (sign -1)
+  Matrix6 map_b;       ///< node b's 6 unknowns -> relative motion (sign +1)
+};
+
+/// The spring of `graph.bonds[bond]` for `material`.
+BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& material);
+
+/// The bond's internal forces from its end nodes' unknowns `u_a`, `u_b` (6 each: m, rad).
+BondForces bond_forces(const Bond& bond, const BondSpring& spring, const double* u_a, const double* u_b);
+
+}  // namespace shatter

@@ -1,0 +1,81 @@
+#pragma once
+/// The static solve of every anchored component of one support graph at once, keeping across the
+/// rounds of a cascade all the work that depends only on the intact graph.
+///
+/// Design note: breaking bonds only removes values from K, so one pattern (the intact graph's, with
+/// identity rows for the nodes of falling clusters, graph_stiffness.h) serves every round. The split
+/// into decoupled blocks (decoupled_blocks.h), each block's lower-triangle pattern with its gather map
+/// from K, and each block's AMD ordering and CHOLMOD symbolic analysis are therefore done once; a round
+/// costs an assembly by scatter, a gather per block and a numeric factorisation. The anchored
+/// components share the system but not a single entry, so each one's solution is its own solve's,
+/// and the residual is reported per component, as for a solve of the component alone. The path steps
+/// aside (the caller solves per component) when it does not apply: a block above the flop limit of
+/// the direct solve (CG territory), a factorisation that fails, or a coupling dropped between blocks
+/// that has grown above the decoupling tolerance once bonds broke.
+
+#include "algorithms/bonds/graph_components.h"
+#include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
+#include "algorithms/stress/rigid_body_spring/linear_solve.h"
+#include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
+#include "algorithms/stress/stress_model.h"
+
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace shatter {
+
+class CascadeSolver final : public StressSolverState {
+ public:
+  /// A solver for `graph` and `material`; the intact pattern, springs and block split are built by the
+  /// first solve (a cascade's first round goes per component and may be its only one).
+  CascadeSolver(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings);
+
+  /// True when built for this graph object (same sizes) and the same stiffness constants and settings.
+  [[nodiscard]] bool fits(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings) const;
+
+  /// Solves the anchored components with `solve_now[c] != 0` (#components of `components`, computed with
+  /// `broken`, #bonds) under `loads` (6 #nodes): their nodes' `displacements` (6 #nodes) and their
+  /// bonds' `forces` (#bonds) are overwritten, nothing else is. Returns the report summed over those
+  /// components as per-component solves would, or nothing when this path does not apply (nothing
+  /// written then).
+  std::optional<SolverReport> solve(const SupportGraph& graph, const GraphComponents& components,
+                                    std::span<const std::uint8_t> broken, std::span<const std::uint8_t> solve_now,
+                                    std::span<const double> loads, std::vector<double>& displacements,
+                                    std::vector<BondForces>& forces);
+
+ private:
+  /// One decoupled block: its unknowns, the lower triangle of K(block, block) in a fixed pattern, and
+  /// its factor (analysed once, factorised in every solve that needs it).
+  struct Block {
+    std::vector<int> unknowns;             // ascending
+    Eigen::SparseMatrix<double> lower;     // fixed pattern, values gathered from K
+    std::vector<int> source;               // #entries of lower: index in K's value array
+    SupernodalCholesky cholesky;
+    bool analysed = false;                 // ordering and symbolic factor done
+    bool direct = false;                   // analysed and within direct_max_flops
+    bool factorised = false;               // numeric factor of the current K
+  };
+  /// An entry of K between two blocks, dropped from both: value index and its diagonal indices.
+  struct Coupling {
+    int value, row_diagonal, column_diagonal;
+  };
+
+  void build(const SupportGraph& graph);
+  [[nodiscard]] bool couplings_negligible() const;
+  bool factorize(Block& block);
+
+  const SupportGraph* graph_;
+  int node_count_, bond_count_;
+  double young_modulus_, shear_modulus_;
+  Material material_;
+  SpringSolverSettings settings_;
+  std::optional<GraphStiffness> stiffness_;  // built by the first solve
+  std::vector<Block> blocks_;
+  std::vector<Coupling> couplings_;
+  std::mutex mutex_;
+};
+
+}  // namespace shatter

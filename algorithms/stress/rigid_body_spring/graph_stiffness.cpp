@@ -1,0 +1,92 @@
+#include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
+
+#include <algorithm>
+
+namespace shatter {
+
+GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& material) {
+  first_.assign(graph.nodes.size(), -1);
+  int nf = 0;
+  for (std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if (!graph.nodes[v].anchored) first_[v] = 6 * nf++;
+  const int n = 6 * nf;
+
+  // Column pattern: node i's columns hold the 6 rows of i and of every free neighbour, sorted.
+  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(nf));
+  for (std::size_t v = 0; v < graph.nodes.size(); ++v)
+    if (first_[v] >= 0) neighbours[static_cast<std::size_t>(first_[v] / 6)].push_back(first_[v] / 6);
+  for (const Bond& e : graph.bonds) {
+    const int la = first_[static_cast<std::size_t>(e.a)], lb = first_[static_cast<std::size_t>(e.b)];
+    if (la >= 0 && lb >= 0) {
+      neighbours[static_cast<std::size_t>(la / 6)].push_back(lb / 6);
+      neighbours[static_cast<std::size_t>(lb / 6)].push_back(la / 6);
+    }
+  }
+  std::vector<int> outer(static_cast<std::size_t>(n) + 1, 0);
+  for (int i = 0; i < nf; ++i) {
+    auto& list = neighbours[static_cast<std::size_t>(i)];
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    for (int k = 0; k < 6; ++k) outer[static_cast<std::size_t>(6 * i + k + 1)] = 6 * static_cast<int>(list.size());
+  }
+  for (int c = 0; c < n; ++c) outer[static_cast<std::size_t>(c + 1)] += outer[static_cast<std::size_t>(c)];
+  matrix_.resize(n, n);
+  matrix_.resizeNonZeros(outer.back());
+  std::copy(outer.begin(), outer.end(), matrix_.outerIndexPtr());
+  int* inner = matrix_.innerIndexPtr();
+  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + outer.back(), 0.0);
+  diagonal_.assign(static_cast<std::size_t>(n), -1);
+  for (int i = 0; i < nf; ++i)
+    for (int k = 0; k < 6; ++k) {
+      int at = outer[static_cast<std::size_t>(6 * i + k)];
+      for (const int j : neighbours[static_cast<std::size_t>(i)])
+        for (int r = 0; r < 6; ++r) {
+          if (6 * j + r == 6 * i + k) diagonal_[static_cast<std::size_t>(6 * i + k)] = at;
+          inner[at++] = 6 * j + r;
+        }
+    }
+  // Block (row node j, column node i) starts in column 6 i at slot j of i's neighbour list.
+  auto slot = [&](int j, int i) {
+    if (j < 0 || i < 0) return Slot{};
+    const auto& list = neighbours[static_cast<std::size_t>(i / 6)];
+    const int at = static_cast<int>(std::lower_bound(list.begin(), list.end(), j / 6) - list.begin());
+    return Slot{outer[static_cast<std::size_t>(i)] + 6 * at, 6 * static_cast<int>(list.size())};
+  };
+
+  springs_.resize(graph.bonds.size());
+  blocks_.resize(graph.bonds.size());
+  slots_.resize(graph.bonds.size());
+  for (std::size_t b = 0; b < graph.bonds.size(); ++b) {
+    const Bond& e = graph.bonds[b];
+    const BondSpring& s = springs_[b] = bond_spring(graph, static_cast<int>(b), material);
+    const Matrix6* maps[2] = {&s.map_a, &s.map_b};
+    const int ends[2] = {first_[static_cast<std::size_t>(e.a)], first_[static_cast<std::size_t>(e.b)]};
+    for (int x = 0; x < 2; ++x)
+      for (int y = 0; y < 2; ++y) {
+        blocks_[b][static_cast<std::size_t>(2 * x + y)] = maps[y]->transpose() * s.stiffness * *maps[x];
+        slots_[b][static_cast<std::size_t>(2 * x + y)] = slot(ends[y], ends[x]);
+      }
+  }
+}
+
+void GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
+  double* value = matrix_.valuePtr();
+  std::fill(value, value + matrix_.nonZeros(), 0.0);
+  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+    if (!include_bond[b]) continue;
+    for (std::size_t q = 0; q < 4; ++q) {
+      const Slot s = slots_[b][q];
+      if (s.start < 0) continue;
+      const Matrix6& block = blocks_[b][q];
+      for (int k = 0; k < 6; ++k) {
+        double* column = value + s.start + k * s.stride;
+        for (int r = 0; r < 6; ++r) column[r] += block(r, k);
+      }
+    }
+  }
+  for (std::size_t v = 0; v < identity_node.size(); ++v)
+    if (identity_node[v] && first_[v] >= 0)
+      for (int k = 0; k < 6; ++k) value[diagonal_[static_cast<std::size_t>(first_[v] + k)]] = 1.0;
+}
+
+}  // namespace shatter

@@ -1,0 +1,60 @@
+#pragma once
+/// The stiffness matrix of every free node of a support graph in one fixed compressed-column pattern:
+/// the pattern of the intact graph, whatever is broken.
+///
+/// Design note: a cascade changes K only by removing bonds, so the pattern, the scatter positions of
+/// every bond's 6 x 6 blocks and the blocks themselves are computed once per graph and material; a
+/// round re-assembles by adding the blocks of the bonds still included into the zeroed values, in
+/// bond order (the same sums, bit for bit, as an assembly of the component alone). Nodes that are not
+/// solved (falling clusters) get identity rows, so the matrix stays positive definite with the
+/// same pattern and its ordering and symbolic factorisation stay valid.
+
+#include "algorithms/bonds/support_graph.h"
+#include "algorithms/stress/material.h"
+#include "algorithms/stress/rigid_body_spring/bond_spring.h"
+
+#include <Eigen/SparseCore>
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace shatter {
+
+class GraphStiffness {
+ public:
+  /// Pattern, springs and scatter positions of every bond of `graph` (6 unknowns per free node).
+  GraphStiffness(const SupportGraph& graph, const Material& material);
+
+  /// #unknowns: 6 per node that is not anchored.
+  [[nodiscard]] int unknowns() const { return static_cast<int>(matrix_.cols()); }
+  /// Index of node `v`'s first unknown (its 6 are consecutive), -1 when anchored.
+  [[nodiscard]] int first_unknown(int v) const { return first_[static_cast<std::size_t>(v)]; }
+  /// Index in the value array of the diagonal entry of unknown `i`.
+  [[nodiscard]] int diagonal_index(int i) const { return diagonal_[static_cast<std::size_t>(i)]; }
+  /// The spring of bond `b`.
+  [[nodiscard]] const BondSpring& spring(int b) const { return springs_[static_cast<std::size_t>(b)]; }
+
+  /// K = the springs of the bonds with `include_bond[b] != 0` (#bonds) plus the identity on the unknowns
+  /// of the nodes with `identity_node[v] != 0` (#nodes; such nodes must have no included bond).
+  void assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node);
+  /// The last assembled K: both triangles, #unknowns square, rows sorted in every column.
+  [[nodiscard]] const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
+
+ private:
+  /// Where one bond's 6 x 6 block (row node y, column node x) goes: column k of the block starts at
+  /// value index `start + k * stride`; start < 0 when either node is anchored.
+  struct Slot {
+    int start = -1;
+    int stride = 0;
+  };
+  std::vector<int> first_;                    // #nodes
+  std::vector<int> diagonal_;                 // #unknowns
+  std::vector<BondSpring> springs_;           // #bonds
+  std::vector<std::array<Matrix6, 4>> blocks_;// #bonds: (y, x) = (a, a), (b, a), (a, b), (b, b)
+  std::vector<std::array<Slot, 4>> slots_;    // #bonds, same order
+  Eigen::SparseMatrix<double> matrix_;
+};
+
+}  // namespace shatter
