@@ -3,10 +3,12 @@
 // 25 and 100 fragments. Error figures ride along as counters, so every time has its accuracy next to it.
 //
 //   build/bin/shatter_benchmarks [--benchmark_filter=...] [--benchmark_repetitions=5]
-// Families: slice/ and fracture/ (plane-slice vs cgal-clip), voronoi/ (voronoi vs its exact cell replay).
+// Families: slice/ and fracture/ (plane-slice vs cgal-clip), voronoi/ (voronoi vs its exact cell replay),
+// self-intersection/ (the up-front input check of voronoi and fem-lite).
 //
 // Meshes come from $SHATTER_MESH_DIR or <source>/data/meshes (scripts/fetch-meshes).
 
+#include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "algorithms/fracture/voronoi/voronoi_cells.h"
@@ -38,6 +40,17 @@ const std::vector<std::string>& ladder() {
   static const std::vector<std::string> names = {"sphere966.off", "elephant.off", "homer.off", "armadillo.off",
                                                  "refined_elephant.off"};
   return names;
+}
+
+/// The exact self-intersection test voronoi and fem-lite run on every input.
+void self_intersection(benchmark::State& state, const Solid& solid) {
+  bool found = false;
+  for (auto _ : state) {
+    found = find_self_intersection(solid.mesh).has_value();
+    benchmark::DoNotOptimize(found);
+  }
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
+  state.counters["intersects"] = found ? 1.0 : 0.0;
 }
 
 void slice_once(benchmark::State& state, const Solid& solid, const std::string& algorithm) {
@@ -149,6 +162,12 @@ int main(int argc, char** argv) {
                                    [s, n](benchmark::State& st) { voronoi_replay(st, *s, n); })
           ->Unit(benchmark::kMillisecond);
     }
+  }
+  for (const auto& [name, solid] : solids) {
+    const Solid* s = &solid;
+    benchmark::RegisterBenchmark(("self-intersection/" + name).c_str(),
+                                 [s](benchmark::State& st) { self_intersection(st, *s); })
+        ->Unit(benchmark::kMillisecond);
   }
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;

@@ -1,5 +1,6 @@
 #include "algorithms/fracture/fem_lite/crack_plane_search.h"
 
+#include "algorithms/core/mass_properties.h"
 #include "algorithms/core/random.h"
 #include "algorithms/fracture/fem_lite/piece_counter.h"
 
@@ -43,7 +44,9 @@ CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::spa
     normals[e] = stresses[e].direction.squaredNorm() > 0.0 ? stresses[e].direction : rng.unit_vector();
 
   PieceCounter pieces(solid);
+  const double min_volume = options.min_piece_share * signed_volume(solid) / std::max(options.fragments, 1);
   std::vector<bool> tried(count, false);
+  std::vector<bool> sliver(count, false);  // skipped for a sliver: tried again if the count is short
   const double spacing = options.spacing;
   for (double factor : {1.0, 0.5, 0.25, 0.0}) {
     if (pieces.count() >= options.fragments) break;
@@ -54,8 +57,17 @@ CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::spa
       tried[e] = true;
       ++search.candidates_tried;
       const Plane plane{grid.centres[e], normals[e]};
-      if (pieces.add(plane) > 0) search.planes.push_back(plane);
+      const int added = pieces.add(plane, min_volume);
+      if (added > 0) search.planes.push_back(plane);
+      sliver[e] = added == 0 && min_volume > 0.0;
     }
+  }
+  for (std::size_t e : order) {
+    if (pieces.count() >= options.fragments) break;
+    if (!sliver[e]) continue;
+    ++search.candidates_tried;
+    const Plane plane{grid.centres[e], normals[e]};
+    if (pieces.add(plane) > 0) search.planes.push_back(plane);
   }
   search.fragments = pieces.count();
   return search;

@@ -10,6 +10,9 @@
 /// neighbours. Each accepted plane is cut into the pieces at once (PieceCounter), so the search stops
 /// exactly when the fragment count is reached and a plane that adds no piece is dropped. When the
 /// candidates run out first, the spacing is halved (twice) and then ignored, and the search goes on.
+/// A plane that would cut off a piece smaller than `min_piece_share` of the mean fragment volume is
+/// skipped (a sliver along an earlier plane or the surface); only if every candidate has been tried
+/// without reaching the count are the skipped ones tried again with slivers allowed.
 
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/fem_lite/element_stress.h"
@@ -27,6 +30,9 @@ struct CrackSearchOptions {
   double spacing = 1.0;              ///< cells, >= 0 (FemLiteSettings::crack_spacing)
   double tensile_strength = 3e6;     ///< Pa, only for the over_strength count
   std::uint64_t seed = 1;            ///< directions of unstressed elements (SplitMix64)
+  /// Smallest piece a plane may cut off, share of the solid's volume / `fragments`, in [0, 1)
+  /// (FemLiteSettings::min_piece_share); 0 allows any piece.
+  double min_piece_share = 0.0;
 };
 
 /// The planes found and what they give.

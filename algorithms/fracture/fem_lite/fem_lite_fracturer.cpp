@@ -1,5 +1,6 @@
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 
+#include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/fem_lite/crack_plane_search.h"
 #include "algorithms/fracture/fem_lite/element_stress.h"
 #include "algorithms/fracture/fem_lite/fem_loads.h"
@@ -16,6 +17,8 @@ namespace shatter {
 Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params) const {
   if (Status s = check_fracture_params(params); !s) return s.error();
   if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
+  // A surface that crosses itself makes cut outlines that cross: no valid partition, as for voronoi.
+  if (Status s = check_no_self_intersection(solid, "fem-lite"); !s) return s.error();
   FemLiteAnalysis analysis;
   if (params.fragments <= 1) {
     analysis.fragments = 1;
@@ -42,6 +45,7 @@ Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const Fract
   options.spacing = settings_.crack_spacing;
   options.tensile_strength = settings_.material.tensile_strength;
   options.seed = params.seed;
+  options.min_piece_share = settings_.min_piece_share;
   CrackSearch search = search_crack_planes(solid, grid, stresses, options);
   analysis.planes = std::move(search.planes);
   analysis.fragments = search.fragments;

@@ -23,6 +23,8 @@ Status check_fem_lite_settings(const FemLiteSettings& settings) {
                  std::to_string(settings.contact_time)};
   if (!(std::isfinite(settings.crack_spacing) && settings.crack_spacing >= 0.0))
     return Error{"fem-lite: crack_spacing must be finite and >= 0, got " + std::to_string(settings.crack_spacing)};
+  if (!(settings.min_piece_share >= 0.0 && settings.min_piece_share < 1.0))
+    return Error{"fem-lite: min_piece_share must be in [0, 1), got " + std::to_string(settings.min_piece_share)};
   return {};
 }
 

@@ -31,6 +31,10 @@ struct FemLiteSettings {
   /// Smallest distance between a new crack's element centre and an earlier crack plane, in cells
   /// (the cell's size along the earlier plane's normal), >= 0; default 1.
   double crack_spacing = 1.0;
+  /// Smallest piece a crack plane may cut off, as a share of the mean fragment volume (the solid's
+  /// volume / the requested count), in [0, 1); default 0.01. A plane that would leave a smaller
+  /// piece (a sliver along an earlier plane or the surface) is skipped; 0 allows any piece.
+  double min_piece_share = 0.01;
 };
 
 /// Error (naming the key) unless every field is finite and in range.

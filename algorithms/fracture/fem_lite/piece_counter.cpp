@@ -1,5 +1,6 @@
 #include "algorithms/fracture/fem_lite/piece_counter.h"
 
+#include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_components.h"
 
 #include <algorithm>
@@ -36,22 +37,35 @@ void PieceCounter::append(Mesh&& mesh) {
   pieces_.push_back(std::move(mesh));
 }
 
-int PieceCounter::add(const Plane& plane) {
+int PieceCounter::add(const Plane& plane, double min_volume) {
+  // Cut first, commit only when no part is a sliver: pieces the plane misses are never copied.
+  std::vector<std::pair<std::size_t, std::vector<Mesh>>> cuts;
+  Mesh below;
+  Mesh above;
+  for (std::size_t i = 0; i < pieces_.size(); ++i) {
+    if (misses(boxes_[i], plane) || slicer_.slice(pieces_[i], plane, below, above) != SliceOutcome::cut) continue;
+    std::vector<Mesh> parts = connected_components(std::move(below));
+    for (Mesh& part : connected_components(std::move(above))) parts.push_back(std::move(part));
+    if (min_volume > 0.0)
+      for (const Mesh& part : parts)
+        if (signed_volume(part) < min_volume) return 0;
+    cuts.emplace_back(i, std::move(parts));
+  }
+  if (cuts.empty()) return 0;
   const int before = count();
   std::vector<Mesh> old_pieces = std::move(pieces_);
   std::vector<Aabb> old_boxes = std::move(boxes_);
   pieces_.clear();
   boxes_.clear();
-  Mesh below;
-  Mesh above;
+  std::size_t next_cut = 0;
   for (std::size_t i = 0; i < old_pieces.size(); ++i) {
-    if (misses(old_boxes[i], plane) || slicer_.slice(old_pieces[i], plane, below, above) != SliceOutcome::cut) {
-      pieces_.push_back(std::move(old_pieces[i]));
-      boxes_.push_back(old_boxes[i]);
+    if (next_cut < cuts.size() && cuts[next_cut].first == i) {
+      for (Mesh& part : cuts[next_cut].second) append(std::move(part));
+      ++next_cut;
       continue;
     }
-    for (Mesh* half : {&below, &above})
-      for (Mesh& part : connected_components(std::move(*half))) append(std::move(part));
+    pieces_.push_back(std::move(old_pieces[i]));
+    boxes_.push_back(old_boxes[i]);
   }
   return count() - before;
 }

@@ -16,7 +16,8 @@ class PieceCounter {
   /// Starts from the connected parts of `solid` (closed, outward).
   explicit PieceCounter(const Mesh& solid);
   /// Cuts every current piece `plane` crosses; returns the number of pieces added (0: no change).
-  int add(const Plane& plane);
+  /// When a part it cuts off has a volume below `min_volume` (m^3), the plane changes nothing.
+  int add(const Plane& plane, double min_volume = 0.0);
   /// Current number of pieces.
   [[nodiscard]] int count() const { return static_cast<int>(pieces_.size()); }
 

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 
 namespace shatter {
@@ -34,23 +35,70 @@ struct Projection {
 
 }  // namespace
 
-CellClipper::CellClipper(const Mesh& solid)
-    : solid_(&solid), vertex_count_(static_cast<std::int32_t>(solid.vertices.size())) {
-  triangle_bounds_.reserve(solid.triangles.size());
-  for (const Triangle& t : solid.triangles) {
-    Aabb b;
-    for (const std::int32_t v : t) b.extend(solid.vertices[static_cast<std::size_t>(v)]);
-    triangle_bounds_.push_back(b);
-  }
+CellClipper::CellClipper(const Mesh& solid, std::span<const Vec3> sites, const PointInMesh* inside)
+    : solid_(&solid), vertex_count_(static_cast<std::int32_t>(solid.vertices.size())), inside_(inside) {
   seen_.assign(solid.vertices.size(), 0);
   side_offset_.assign(solid.vertices.size(), 0);
   seen_out_.assign(solid.vertices.size(), 0);
   out_of_vertex_.assign(solid.vertices.size(), 0);
+  find_owners(sites);
+  // Owned triangles by site (CSR, index order within a site), mixed ones with their bounds.
+  const std::size_t n = solid.triangles.size();
+  std::vector<std::int32_t> triangle_owner(n, -1);
+  owned_start_.assign(sites.size() + 1, 0);
+  for (std::size_t f = 0; f < n; ++f) {
+    const Triangle& t = solid.triangles[f];
+    const std::int32_t o = owner_[static_cast<std::size_t>(t[0])];
+    if (o >= 0 && o == owner_[static_cast<std::size_t>(t[1])] && o == owner_[static_cast<std::size_t>(t[2])]) {
+      triangle_owner[f] = o;
+      ++owned_start_[static_cast<std::size_t>(o) + 1];
+      continue;
+    }
+    mixed_.push_back(static_cast<std::int32_t>(f));
+    Aabb b;
+    for (const std::int32_t v : t) b.extend(solid.vertices[static_cast<std::size_t>(v)]);
+    mixed_bounds_.push_back(b);
+  }
+  for (std::size_t k = 1; k < owned_start_.size(); ++k) owned_start_[k] += owned_start_[k - 1];
+  owned_.resize(static_cast<std::size_t>(owned_start_.back()));
+  std::vector<std::int32_t> fill(owned_start_.begin(), owned_start_.end() - 1);
+  for (std::size_t f = 0; f < n; ++f)
+    if (triangle_owner[f] >= 0) owned_[static_cast<std::size_t>(fill[static_cast<std::size_t>(triangle_owner[f])]++)] = static_cast<std::int32_t>(f);
 }
 
-bool CellClipper::clip(std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box,
+void CellClipper::find_owners(std::span<const Vec3> sites) {
+  // |v - s_i|^2 - |v - s_j|^2 = 2 (s_j - s_i) . (v - (s_i + s_j) / 2): a gap in squared distances far
+  // above the round-off of both (relative 1e-15 of (extent + |coordinates|) x extent) and of the
+  // rounded midpoint puts v strictly on site i's side of the bisector plane as stored.
+  Aabb box = bounding_box(*solid_);
+  for (const Vec3& s : sites) box.extend(s);
+  const double extent = box.diagonal();
+  const double magnitude = box.min.cwiseAbs().cwiseMax(box.max.cwiseAbs()).maxCoeff();
+  const double margin = 1e-9 * extent * (extent + magnitude);
+  owner_.assign(solid_->vertices.size(), -1);
+  for (std::size_t v = 0; v < solid_->vertices.size(); ++v) {
+    const Vec3& p = solid_->vertices[v];
+    double best = std::numeric_limits<double>::infinity();
+    double second = best;
+    std::int32_t nearest = -1;
+    for (std::size_t k = 0; k < sites.size(); ++k) {
+      const double d2 = (p - sites[k]).squaredNorm();
+      if (d2 < best) {
+        second = best;
+        best = d2;
+        nearest = static_cast<std::int32_t>(k);
+      } else if (d2 < second) {
+        second = d2;
+      }
+    }
+    if (second - best > margin) owner_[v] = nearest;
+  }
+}
+
+bool CellClipper::clip(int site, std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box,
                        const Aabb& bounds, Mesh& out) {
   if (!polytope.ok) return false;
+  site_ = site;
   polytope_ = polytope;
   select_planes(planes, box);
   face_of_plane_.assign(planes_.size(), -1);
@@ -70,13 +118,33 @@ bool CellClipper::clip(std::span<const Plane> planes, const CellPolytope& polyto
   for (auto& edges : cap_edges_) edges.clear();
   edge_points_.clear();
   out_ = Mesh{};
-  for (std::size_t f = 0; f < solid_->triangles.size(); ++f)
-    if (overlaps(triangle_bounds_[f], bounds) && !clip_triangle(f)) return false;
+  // The site's own triangles and the mixed ones near the cell, merged in index order.
+  const std::int32_t* owned = owned_.data() + owned_start_[static_cast<std::size_t>(site)];
+  const std::int32_t* owned_end = owned_.data() + owned_start_[static_cast<std::size_t>(site) + 1];
+  std::size_t m = 0;
+  const auto next_mixed = [&] {
+    while (m < mixed_.size() && !overlaps(mixed_bounds_[m], bounds)) ++m;
+    return m < mixed_.size() ? mixed_[m] : std::numeric_limits<std::int32_t>::max();
+  };
+  for (std::int32_t mixed = next_mixed(); owned != owned_end || m < mixed_.size();) {
+    if (owned != owned_end && *owned < mixed) {
+      copy_triangle(static_cast<std::size_t>(*owned++));
+      continue;
+    }
+    if (!clip_triangle(static_cast<std::size_t>(mixed))) return false;
+    ++m;
+    mixed = next_mixed();
+  }
   for (std::size_t p = 0; p < planes_.size(); ++p)
     if (!cap_edges_[p].empty() && face_of_plane_[p] < 0) return false;  // a cut with no face
   if (!walk_cell_edges() || !settle_corners() || !triangulate_caps()) return false;
   out = std::move(out_);
   return true;
+}
+
+void CellClipper::copy_triangle(std::size_t f) {
+  const Triangle& t = solid_->triangles[f];
+  out_.add_triangle(out_index(t[0]), out_index(t[1]), out_index(t[2]), solid_->tags[f]);
 }
 
 void CellClipper::select_planes(std::span<const Plane> planes, const Aabb& box) {
@@ -127,6 +195,10 @@ void CellClipper::first_sight(std::int32_t v) {
   const auto sv = static_cast<std::size_t>(v);
   seen_[sv] = stamp_;
   side_offset_[sv] = static_cast<std::int32_t>(sides_.size());
+  if (owner_[sv] == site_) {  // certainly strictly inside every bisector of the cell
+    sides_.insert(sides_.end(), planes_.size() + 1, std::int8_t{-1});
+    return;
+  }
   std::int8_t all = -1;
   for (const Plane& p : planes_) {
     const auto s = static_cast<std::int8_t>(plane_side(solid_->vertices[sv], p.point, p.normal));
@@ -312,7 +384,10 @@ bool CellClipper::settle_corners() {
     for (const CellPolytope::Face& face : polytope_.faces) on_box |= face.label < 0;
     bool inside = false;
     if (!on_box) {
-      if (!inside_) inside_ = std::make_unique<PointInMesh>(*solid_);
+      if (inside_ == nullptr) {
+        own_inside_ = std::make_unique<PointInMesh>(*solid_);
+        inside_ = own_inside_.get();
+      }
       const InsideAnswer answer = (*inside_)(polytope_.corners[static_cast<std::size_t>(polytope_.faces.front().corners.front())]);
       if (answer == InsideAnswer::undecided) return false;
       inside = answer == InsideAnswer::inside;

@@ -20,6 +20,14 @@
 /// by triangulate_cap. Whenever a step cannot be decided consistently (a point exactly on a plane,
 /// a corner of four planes, walks that disagree, a cap that does not close), `clip` returns false
 /// and writes nothing: the caller then cuts that cell with the sequential slicer.
+///
+/// Most triangles lie wholly inside one cell. So each solid vertex first gets its owner: the site
+/// nearest to it when the next nearest is farther by a margin far above the round-off of squared
+/// distances and of the bisector's midpoint, so that the vertex is certainly strictly inside every
+/// bisector of that site's cell (the exact side tests would agree). A triangle whose three corners
+/// have one owner lies inside that cell (convexity): it is copied into that cell without a side test
+/// and never looked at for the others. Only the other triangles ("mixed") are clipped, each by the
+/// cells whose bounds meet its bounds; their owned corners need no side test either.
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
@@ -38,16 +46,18 @@ namespace shatter {
 /// Clips a closed, outward solid to convex cells; keeps scratch buffers between calls.
 class CellClipper {
  public:
-  /// Bounds every triangle of `solid` (which must outlive the clipper), O(#F).
-  explicit CellClipper(const Mesh& solid);
+  /// Finds the owner site of every vertex of `solid` among `sites` (#S, m) and sorts the triangles
+  /// into owned and mixed ones, O(#V #S + #F). `solid`, `sites` and `inside` (an inside test of
+  /// `solid`, or null to build one on first need) must outlive the clipper.
+  CellClipper(const Mesh& solid, std::span<const Vec3> sites, const PointInMesh* inside = nullptr);
 
-  /// Writes into `out` the part of the solid on the negative side of every plane of `planes`
-  /// (the cell; #P planes, any lengths), which lies in `bounds` (m). `polytope` is the cell clipped
-  /// to a box `box` (m) that holds the solid strictly inside, face labels indexing `planes`. The
-  /// part may be empty or have several connected parts. False (and `out` untouched) when the cell
-  /// must be cut by the exact sequential path.
-  bool clip(std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box, const Aabb& bounds,
-            Mesh& out);
+  /// Writes into `out` the part of the solid in the cell of site `site`: on the negative side of
+  /// every plane of `planes` (the bisectors of `site` with other sites; #P planes), which lies in
+  /// `bounds` (m). `polytope` is the cell clipped to a box `box` (m) that holds the solid strictly
+  /// inside, face labels indexing `planes`. The part may be empty or have several connected parts.
+  /// False (and `out` untouched) when the cell must be cut by the exact sequential path.
+  bool clip(int site, std::span<const Plane> planes, const CellPolytope& polytope, const Aabb& box,
+            const Aabb& bounds, Mesh& out);
 
  private:
   /// One corner of a triangle clipped so far: a point ref and the plane of the edge leaving it
@@ -66,6 +76,8 @@ class CellClipper {
     int into;
   };
 
+  void find_owners(std::span<const Vec3> sites);
+  void copy_triangle(std::size_t f);
   bool clip_triangle(std::size_t f);
   bool walk_cell_edges();
   bool settle_corners();
@@ -85,8 +97,14 @@ class CellClipper {
 
   const Mesh* solid_;
   std::int32_t vertex_count_;
-  std::vector<Aabb> triangle_bounds_;
-  std::unique_ptr<PointInMesh> inside_;  // built on first need
+  std::vector<std::int32_t> owner_;                // per solid vertex: its owner site, -1 when unclear
+  std::vector<std::int32_t> owned_start_;          // per site: CSR offsets into owned_, #S + 1
+  std::vector<std::int32_t> owned_;                // triangles whose corners share one owner, by site
+  std::vector<std::int32_t> mixed_;                // the other triangles, in index order
+  std::vector<Aabb> mixed_bounds_;                 // their bounds
+  const PointInMesh* inside_;                      // the caller's, or own_inside_ built on first need
+  std::unique_ptr<PointInMesh> own_inside_;
+  int site_ = -1;                                  // the cell being clipped
 
   // Per cell. A "ref" names a vertex of the solid (0..V-1) or a made point (V+k).
   std::vector<Plane> planes_;                      // the planes that may cut the cell, in order

@@ -19,6 +19,7 @@
 
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_components.h"
+#include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
 #include "algorithms/fracture/voronoi/cell_clipper.h"
@@ -238,16 +239,26 @@ Status check_settings(const VoronoiSettings& s) {
 Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
   if (Status s = check_fracture_params(params); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
-  Result<std::vector<Vec3>> sites = sample_sites(solid, params, settings_.sites);
+  if (Status s = check_no_self_intersection(solid, "voronoi"); !s) return s.error();
+  if (solid.empty()) return std::vector<Fragment>{};
+  const PointInMesh inside(solid);
+  Result<std::vector<Vec3>> sites = sample_sites(inside, params, settings_.sites);
   if (!sites) return sites.error();
-  return fracture_with_sites(solid, *sites);
+  if (Status s = check_sites(*sites); !s) return s.error();
+  return cut_cells(solid, *sites, &inside);
 }
 
 Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& solid,
                                                                     std::span<const Vec3> sites) const {
   if (Status s = check_sites(sites); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
+  if (Status s = check_no_self_intersection(solid, "voronoi"); !s) return s.error();
   if (solid.empty()) return std::vector<Fragment>{};
+  return cut_cells(solid, sites, nullptr);
+}
+
+std::vector<Fragment> VoronoiFracturer::cut_cells(const Mesh& solid, std::span<const Vec3> sites,
+                                                  const PointInMesh* inside) const {
   Aabb box = bounding_box(solid);
   const double margin = 1e-9 * std::max(box.diagonal(), 1e-300) + 1e-300;
   box.min.array() -= 4 * margin;
@@ -258,14 +269,14 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& 
   // Each cell in one pass over the triangles near it; the few the clipper cannot decide are cut by
   // the sequential slicer, from a site tree over just those cells.
   std::vector<std::int32_t> sequential;
-  CellClipper clipper(solid);
+  CellClipper clipper(solid, sites, inside);
   std::vector<Plane> planes;
   Mesh cell;
   for (int i = 0; i < static_cast<int>(sites.size()); ++i) {
     const VoronoiCell& c = cells[static_cast<std::size_t>(i)];
     planes.clear();
     for (const std::int32_t j : c.neighbours) planes.push_back(bisector_plane(sites, i, j));
-    if (!clipper.clip(planes, c.polytope, box, c.bounds, cell)) {
+    if (!clipper.clip(i, planes, c.polytope, box, c.bounds, cell)) {
       sequential.push_back(i);
       continue;
     }

@@ -26,16 +26,21 @@ class VoronoiFracturer final : public Fracturer {
   /// A fracturer with the given settings (checked when fracturing).
   explicit VoronoiFracturer(VoronoiSettings settings = {}) : settings_(settings) {}
   [[nodiscard]] std::string_view name() const override { return "voronoi"; }
-  /// Places `params.fragments` sites (voronoi_sites.h) and cuts `solid` into their cells.
+  /// Places `params.fragments` sites (voronoi_sites.h) and cuts `solid` into their cells. A solid
+  /// whose surface intersects itself is an error (its cut outlines would cross).
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
   /// Cuts `solid` into the Voronoi cells of the given sites (#S distinct finite points, m; sites
   /// outside the solid are allowed, their cells may miss it). Fragments come in site order, the parts
-  /// of one cell in connected_components order; cells that miss the solid give none.
+  /// of one cell in connected_components order; cells that miss the solid give none. A solid whose
+  /// surface intersects itself is an error.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_with_sites(const Mesh& solid,
                                                                   std::span<const Vec3> sites) const;
 
  private:
+  /// The cells of checked `sites` cut out of `solid`; `inside` is its inside test, or null.
+  [[nodiscard]] std::vector<Fragment> cut_cells(const Mesh& solid, std::span<const Vec3> sites,
+                                                const PointInMesh* inside) const;
   VoronoiSettings settings_;
 };
 

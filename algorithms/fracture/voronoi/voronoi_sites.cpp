@@ -13,7 +13,9 @@ namespace {
 /// Accepts a candidate site when it is strictly inside and not a repeat.
 class SiteCollector {
  public:
-  SiteCollector(const Mesh& solid, int wanted) : inside_(solid) { sites_.reserve(static_cast<std::size_t>(wanted)); }
+  SiteCollector(const PointInMesh& inside, int wanted) : inside_(inside) {
+    sites_.reserve(static_cast<std::size_t>(wanted));
+  }
   bool offer(const Vec3& q) {
     if (!q.allFinite() || inside_(q) != InsideAnswer::inside) return false;
     if (std::find(sites_.begin(), sites_.end(), q) != sites_.end()) return false;
@@ -25,7 +27,7 @@ class SiteCollector {
   std::vector<Vec3> take() { return std::move(sites_); }
 
  private:
-  PointInMesh inside_;
+  const PointInMesh& inside_;
   std::vector<Vec3> sites_;
 };
 
@@ -33,8 +35,13 @@ class SiteCollector {
 
 Result<std::vector<Vec3>> sample_sites(const Mesh& solid, const FractureParams& params,
                                        const SiteSettings& settings) {
+  return sample_sites(PointInMesh(solid), params, settings);
+}
+
+Result<std::vector<Vec3>> sample_sites(const PointInMesh& inside, const FractureParams& params,
+                                       const SiteSettings& settings) {
   const int wanted = params.fragments;
-  SiteCollector sites(solid, wanted);
+  SiteCollector sites(inside, wanted);
   SplitMix64 rng(params.seed);
   const Aabb box = sites.bounds();
   const long long budget = static_cast<long long>(settings.max_draws_per_site) * wanted;

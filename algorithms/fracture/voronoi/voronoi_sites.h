@@ -4,6 +4,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
+#include "algorithms/fracture/voronoi/point_in_mesh.h"
 
 #include <cstdint>
 #include <vector>
@@ -31,6 +32,10 @@ struct SiteSettings {
 /// found so far: fewer fragments than requested, which the fragment count of the metrics shows, rather
 /// than a failed frame. With none found, one site at the box centre: one cell, the whole solid.
 Result<std::vector<Vec3>> sample_sites(const Mesh& solid, const FractureParams& params,
+                                       const SiteSettings& settings = {});
+
+/// The same with the solid's inside test already built (it is shared with the cell clipper).
+Result<std::vector<Vec3>> sample_sites(const PointInMesh& inside, const FractureParams& params,
                                        const SiteSettings& settings = {});
 
 }  // namespace shatter
