@@ -20,6 +20,7 @@ struct CompareCommandOptions {
   CompareOptions compare;
   std::string junit;
   std::string markdown;
+  bool no_normalize = false;
 };
 
 int run_compare(const CompareCommandOptions& o) {
@@ -66,9 +67,13 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--alpha", o->compare.alpha, "Significance level of the Mann-Whitney U test (0.01)");
   cmd->add_option("--metric", o->compare.metric, "time (default) or instructions");
   cmd->add_option("--clock", o->compare.clock, "Time mode: cpu (thread CPU time, default) or wall");
+  cmd->add_flag("--no-normalize", o->no_normalize, "CPU clock: do not divide by the calibration workload's time");
+  cmd->callback([o, &exit_code] {
+    o->compare.normalize = !o->no_normalize;
+    exit_code = run_compare(*o);
+  });
   cmd->add_option("--junit", o->junit, "Write JUnit XML here: one test case per comparison");
   cmd->add_option("--markdown", o->markdown, "Also write the Markdown table to this file");
-  cmd->callback([o, &exit_code] { exit_code = run_compare(*o); });
 }
 
 }  // namespace shatter::cli

@@ -177,6 +177,7 @@ int run_grid_command(const GridCommandOptions& o) {
   options.runtime = o.runtime;
   options.no_skip = o.no_skip;
   options.same_seed = o.same_seed;
+  options.count_instructions = o.metric == "instructions" && instruction_marks::running_on_valgrind();
   if (!o.shard.empty() && !parse_shard(o.shard, options.shard_index, options.shard_count))
     return fail_input("--shard: expected K/N (e.g. 0/4), got \"" + o.shard + "\"");
   if (o.format != "shatter" && o.format != "gbench")

@@ -151,6 +151,23 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
     out.warnings.push_back(fmt::format("fewer than 9 repetitions ({} and {}): the U test has little power",
                                        base_reps, new_reps));
 
+  if (o.metric == "time" && o.clock == "cpu") {
+    std::vector<double> bc, nc;
+    bool all = true;
+    for (const GridCell& c : base.grid.cells)
+      for (const GridSample& s : c.samples) {
+        bc.push_back(s.calibration_ms);
+        all = all && s.calibration_ms > 0.0;
+      }
+    for (const GridCell& c : next.grid.cells)
+      for (const GridSample& s : c.samples) {
+        nc.push_back(s.calibration_ms);
+        all = all && s.calibration_ms > 0.0;
+      }
+    out.base_calibration_ms = median_of(bc);
+    out.new_calibration_ms = median_of(nc);
+    out.normalized = o.normalize && all && !bc.empty() && !nc.empty();
+  }
   if (o.metric == "time" && (!base.grid.same_seed || !next.grid.same_seed))
     out.warnings.push_back(
         "repetitions with different seeds fracture differently, so their spread is workload, not noise, and the U "
@@ -187,15 +204,22 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
         out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)), bs, ns, bs, ns, o));
       }
     } else if (o.clock == "cpu") {
-      const std::vector<double> bw = per_rep(b, &GridSample::worst_frame_cpu_ms);
-      const std::vector<double> nw = per_rep(n, &GridSample::worst_frame_cpu_ms);
-      out.rows.push_back(measure_row(name, "worst frame (cpu)", bw, nw, bw, nw, o));
+      // Per repetition: the CPU time, divided by the calibration of that repetition when normalizing
+      // and scaled back to the baseline's machine speed.
+      const auto scale = [&](const GridSample& s) {
+        return out.normalized ? out.base_calibration_ms / s.calibration_ms : 1.0;
+      };
+      std::vector<double> bw, nw;
+      for (const GridSample& s : b.samples) bw.push_back(s.worst_frame_cpu_ms * scale(s));
+      for (const GridSample& s : n.samples) nw.push_back(s.worst_frame_cpu_ms * scale(s));
+      const std::string tag = out.normalized ? " (cpu, normalized)" : " (cpu)";
+      out.rows.push_back(measure_row(name, "worst frame" + tag, bw, nw, bw, nw, o));
       for (const Stage st : kAllStages) {
         std::vector<double> bs, ns;
-        for (const GridSample& s : b.samples) bs.push_back(s.stages_cpu_ms[static_cast<std::size_t>(st)]);
-        for (const GridSample& s : n.samples) ns.push_back(s.stages_cpu_ms[static_cast<std::size_t>(st)]);
+        for (const GridSample& s : b.samples) bs.push_back(s.stages_cpu_ms[static_cast<std::size_t>(st)] * scale(s));
+        for (const GridSample& s : n.samples) ns.push_back(s.stages_cpu_ms[static_cast<std::size_t>(st)] * scale(s));
         if (median_of(bs) == 0.0 && median_of(ns) == 0.0) continue;
-        out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)) + " (cpu)", bs, ns, bs, ns, o));
+        out.rows.push_back(measure_row(name, "stage " + std::string(stage_name(st)) + tag, bs, ns, bs, ns, o));
       }
     } else {
       std::vector<double> bf, nf;
@@ -230,6 +254,12 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
     out += "\n";
   }
   for (const std::string& w : report.warnings) out += "> warning: " + w + "\n\n";
+  if (report.base_calibration_ms > 0.0 && report.new_calibration_ms > 0.0)
+    out += fmt::format("Calibration workload: {:.3f} ms (base) and {:.3f} ms (new): the new run's machine was {:+.1f} % "
+                       "slower{}\n\n",
+                       report.base_calibration_ms, report.new_calibration_ms,
+                       100 * (report.new_calibration_ms / report.base_calibration_ms - 1.0),
+                       report.normalized ? "; CPU times are normalized by it" : "; not normalized");
   const bool time = report.metric == "time";
   out += fmt::format("**{}**: {} regressed, {} accuracy failures, {} improved, {} rows; metric {}, max slowdown "
                      "{:g} %{}\n\n",

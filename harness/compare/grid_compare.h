@@ -26,6 +26,10 @@ struct CompareOptions {
   /// Time mode: "cpu" (the thread's CPU time per stage and of the frame with the most of it; the
   /// default, steadier on a shared runner: time spent descheduled does not count) or "wall".
   std::string clock = "cpu";
+  /// CPU clock: divide each repetition's times by its calibration time (harness/grid/calibration.h)
+  /// and scale by the baseline's median calibration, so that a busier machine does not read as a
+  /// regression. Used when every sample on both sides carries a calibration time.
+  bool normalize = true;
 };
 
 /// Tolerances of the accuracy figures (absolute increases that fail).
@@ -57,6 +61,9 @@ struct CompareReport {
   std::vector<std::string> mismatches;  ///< reasons the results cannot be compared (each fails)
   std::vector<std::string> warnings;    ///< e.g. too few repetitions for the test to ever fire
   std::string metric;                   ///< as compared
+  double base_calibration_ms = 0.0;     ///< median calibration time of the baseline (0: none)
+  double new_calibration_ms = 0.0;      ///< and of the new results
+  bool normalized = false;              ///< times were divided by the calibration
 
   /// True when a row regressed or failed, or the results could not be compared.
   [[nodiscard]] bool failed() const;

@@ -1,6 +1,7 @@
 #include "harness/grid/grid_runner.h"
 
 #include "algorithms/register_all.h"
+#include "harness/grid/calibration.h"
 #include "harness/pipeline/instruction_marks.h"
 
 #include <algorithm>
@@ -186,9 +187,11 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
         run.cache = o.cache;
         run.partition_samples = o.partition_samples;
         instruction_marks::set_run(p, r, rep);
+        const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
         Result<RunResult> result = run_destruction(prepared, run);
         if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
         cell.samples.push_back(sample_of(*result));
+        if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
         add_error(cell.error, *result, rep == 0);
         merge_stages(cell, *result);
         if (o.progress) o.progress(++done, total);

@@ -62,6 +62,7 @@ struct GridSample {
   StageTimes setup_ms{};                         ///< offline stage times
   StageTimes stages_cpu_ms{};                    ///< thread CPU time of the stages inside frames
   double worst_frame_cpu_ms = 0.0;               ///< thread CPU time of the frame with the most of it
+  double calibration_ms = 0.0;                   ///< the reference workload's CPU time around this run (calibration.h); 0 unknown
   bool cache_hit = false;                        ///< the pre-fracture came from the cache
   int fragments = 0;                             ///< pre-fracture fragments made
   int hit = 0;                                   ///< fragments the impact fractured

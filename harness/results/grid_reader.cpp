@@ -95,6 +95,7 @@ GridSample sample(const Json& j, const std::string& path) {
   const Json& cpu = at(j, "cpu", path);
   s.worst_frame_cpu_ms = number(cpu, "worst_frame_ms", join(path, "cpu"));
   s.stages_cpu_ms = stages(cpu, "stages_ms", join(path, "cpu"));
+  s.calibration_ms = number(j, "calibration_ms", path);
   s.cache_hit = boolean(j, "cache_hit", path);
   s.fragments = static_cast<int>(integer(j, "fragments", path));
   s.hit = static_cast<int>(integer(j, "hit", path));

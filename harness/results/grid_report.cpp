@@ -61,6 +61,7 @@ Json sample_json(const GridSample& s) {
           {"stages_ms", stages_json(s.stages_ms)},
           {"setup_ms", stages_json(s.setup_ms)},
           {"cpu", {{"worst_frame_ms", s.worst_frame_cpu_ms}, {"stages_ms", stages_json(s.stages_cpu_ms)}}},
+          {"calibration_ms", s.calibration_ms},
           {"cache_hit", s.cache_hit},
           {"fragments", s.fragments},
           {"hit", s.hit},

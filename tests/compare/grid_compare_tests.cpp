@@ -257,3 +257,28 @@ TEST_CASE("junit: testsuites, counts and a failure element per failed case, esca
   CHECK(count("<testsuite ") == count("</testsuite>"));
   CHECK(count("<testsuites ") == count("</testsuites>"));
 }
+
+TEST_CASE("compare: a busier machine is not a regression once normalized by the calibration", "[compare]") {
+  const auto with_calibration = [](GridResult g, double calibration) {
+    for (GridCell& c : g.cells)
+      for (GridSample& s : c.samples) s.calibration_ms = calibration;
+    return g;
+  };
+  const StoredGrid a = stored(with_calibration(synthetic(10, 1.0, 0.03, 1), 5.0), context(), "a.json");
+  // Everything 40 % slower, the calibration workload too: the machine, not the code.
+  const StoredGrid busy = stored(with_calibration(synthetic(10, 1.4, 0.03, 2), 7.0), context(), "b.json");
+  const CompareReport normalized = compare_grids(a, busy, {});
+  CHECK(normalized.normalized);
+  CHECK_FALSE(normalized.failed());
+  CHECK(compare_markdown(normalized, {}).find("+40.0 % slower") != std::string::npos);
+  CompareOptions raw;
+  raw.normalize = false;
+  CHECK(compare_grids(a, busy, raw).failed());
+  // One stage 20 % slower on an equally busy machine: still caught.
+  GridResult slower = with_calibration(synthetic(10, 1.4, 0.03, 2), 7.0);
+  for (GridCell& c : slower.cells)
+    for (GridSample& s : c.samples) s.stages_cpu_ms[static_cast<std::size_t>(Stage::physics)] *= 1.2;
+  const CompareReport r = compare_grids(a, stored(slower, context(), "c.json"), {});
+  CHECK(r.failed());
+  CHECK(count_rows(r, Verdict::regressed) == 2);  // physics in both cells
+}
