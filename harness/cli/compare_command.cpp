@@ -65,6 +65,8 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   cmd->add_option("NEW", o->next, "New results JSON")->required();
   cmd->add_option("--max-slowdown", o->compare.max_slowdown, "Relative slowdown of a median that can regress (0.05)");
   cmd->add_option("--alpha", o->compare.alpha, "Significance level of the Mann-Whitney U test (0.01)");
+  cmd->add_option("--min-change-ms", o->compare.min_change_ms,
+                  "Time mode: smaller absolute changes of a median never regress (0.01 ms)");
   cmd->add_option("--metric", o->compare.metric, "time (default) or instructions");
   cmd->add_option("--clock", o->compare.clock, "Time mode: cpu (thread CPU time, default) or wall");
   cmd->add_flag("--no-normalize", o->no_normalize, "CPU clock: do not divide by the calibration workload's time");

@@ -40,7 +40,7 @@ ComparisonRow measure_row(const std::string& cell, const std::string& what, cons
   if (o.metric == "time") {
     const MannWhitneyResult test = mann_whitney_u(base, next);
     r.p_value = test.p_value;
-    const bool significant = test.p_value < o.alpha;
+    const bool significant = test.p_value < o.alpha && std::abs(r.new_median - r.base_median) >= o.min_change_ms;
     if (r.change > o.max_slowdown && significant) {
       r.verdict = Verdict::regressed;
       r.note = fmt::format("median +{:.1f} % > {:.1f} % and p = {:.2g} < {:g}", 100 * r.change, 100 * o.max_slowdown,
@@ -48,6 +48,9 @@ ComparisonRow measure_row(const std::string& cell, const std::string& what, cons
     } else if (r.change < -o.max_slowdown && significant) {
       r.verdict = Verdict::improved;
       r.note = fmt::format("median {:.1f} %, p = {:.2g}", 100 * r.change, test.p_value);
+    } else if (r.change > o.max_slowdown && test.p_value < o.alpha) {
+      r.note = fmt::format("slower by {:.1f} %, p = {:.2g}, but by less than {:g} ms", 100 * r.change, test.p_value,
+                           o.min_change_ms);
     } else if (r.change > o.max_slowdown) {
       r.note = fmt::format("slower by {:.1f} % but p = {:.2g} >= {:g}: not shown to be more than noise",
                            100 * r.change, test.p_value, o.alpha);
@@ -119,6 +122,8 @@ Status check_compare_options(const CompareOptions& o) {
     return Error{fmt::format("--alpha: must be in (0, 1), got {}", o.alpha)};
   if (o.metric != "time" && o.metric != "instructions")
     return Error{"--metric: must be time or instructions, got \"" + o.metric + "\""};
+  if (!std::isfinite(o.min_change_ms) || o.min_change_ms < 0.0)
+    return Error{fmt::format("--min-change-ms: must be a finite number >= 0, got {}", o.min_change_ms)};
   if (o.clock != "cpu" && o.clock != "wall") return Error{"--clock: must be cpu or wall, got \"" + o.clock + "\""};
   return {};
 }

@@ -23,6 +23,10 @@ struct CompareOptions {
   double max_slowdown = 0.05;      ///< relative slowdown of a median that can regress, > 0
   double alpha = 0.01;             ///< significance level of the U test, in (0, 1)
   std::string metric = "time";     ///< "time" (ms, statistical) or "instructions" (counts, threshold)
+  /// Time mode: a change smaller than this (ms, absolute, of the median) never regresses: stages of a
+  /// few microseconds (the bond update, the falling-cluster search) move by more than 5 % with timer
+  /// noise alone. >= 0.
+  double min_change_ms = 0.01;
   /// Time mode: "cpu" (the thread's CPU time per stage and of the frame with the most of it; the
   /// default, steadier on a shared runner: time spent descheduled does not count) or "wall".
   std::string clock = "cpu";

@@ -12,7 +12,7 @@
 namespace shatter {
 
 /// Thread CPU time, ms, of the reference workload (sorting and summing 2^16 pseudo-random doubles,
-/// eight times; about 5 ms on this machine). Deterministic work.
+/// twice; 5 to 10 ms on this machine, depending on its load). Deterministic work.
 double calibration_ms();
 
 }  // namespace shatter
