@@ -44,7 +44,7 @@ int run_fracture(const FractureOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(solid->mesh, params);
   const auto stop = std::chrono::steady_clock::now();
-  if (!fragments) return fail_input(fragments.error().message);
+  if (!fragments) return fail_input(o.mesh + ": " + fragments.error().message);
   const double time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
 
   const FractureMetrics m = fracture_metrics(solid->mesh, solid->mass, *fragments, o.fragments);

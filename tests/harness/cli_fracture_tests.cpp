@@ -132,3 +132,20 @@ TEST_CASE("cli: bad input exits 2 with one line and no output files", "[cli]") {
   CHECK_FALSE(fs::exists(out));
   for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().rfind(".frags", 0) != 0);
 }
+
+TEST_CASE("cli: a self-intersecting mesh refused by voronoi names the file, exit 2, nothing written", "[cli]") {
+  const auto cow = std::filesystem::path(SHATTER_SOURCE_DIR) / "data" / "meshes" / "cow.off";
+  REQUIRE(std::filesystem::exists(cow));
+  const auto out = std::filesystem::temp_directory_path() / "shatter_cli_cow_out";
+  std::filesystem::remove_all(out);
+  for (const char* algo : {"voronoi", "fem-lite", "cgal-clip"}) {
+    const auto r = shatter::test::run_cli(std::string("fracture --mesh ") + cow.string() + " --algo " + algo +
+                                          " --fragments 5 --out " + out.string());
+    INFO(algo << ": " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(shatter::test::line_count(r.err) == 1);
+    CHECK(r.err.find("cow.off") != std::string::npos);
+    CHECK(r.err.find("intersect") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+}
