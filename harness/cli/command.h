@@ -32,5 +32,7 @@ void add_table_command(CLI::App& app, int& exit_code);
 void add_accuracy_command(CLI::App& app, int& exit_code);
 /// `shatterbench report`.
 void add_report_command(CLI::App& app, int& exit_code);
+/// `shatterbench stability`.
+void add_stability_command(CLI::App& app, int& exit_code);
 
 }  // namespace shatter::cli

@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   add_table_command(app, exit_code);
   add_accuracy_command(app, exit_code);
   add_report_command(app, exit_code);
+  add_stability_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {
