@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <variant>
 #include <vector>
 
@@ -139,6 +140,42 @@ struct Needs {
   }
 };
 
+/// `schedule.mode`: when the runtime event's work is done (docs/pipeline.md section 6).
+enum class ScheduleMode {
+  immediate,  ///< all of it in the frame the impact lands in
+  prefetch,   ///< the fracture when the trigger fires (prefetch_frames before the impact), the rest on impact
+  amortized,  ///< cut into indivisible steps, spread over frames under a per-frame work budget
+};
+
+/// The mode's name in case files, flags and results: "immediate", "prefetch", "amortized".
+std::string_view schedule_mode_name(ScheduleMode mode);
+
+/// The mode named `name`, or none when unknown.
+std::optional<ScheduleMode> schedule_mode_from_name(std::string_view name);
+
+/// `schedule`: how the runtime event is scheduled over frames.
+struct ScheduleSpec {
+  ScheduleMode mode = ScheduleMode::immediate;  ///< `mode`
+  int prefetch_frames = 2;                      ///< frames from the trigger to the impact (prefetch), >= 0
+  double work_budget_ms = 4.0;                  ///< event work per frame (amortized), ms, >= 0 (0: one step a frame)
+};
+
+/// `fade_out`: small runtime pieces shrink and leave the physics world (off without the key).
+struct FadeOutSpec {
+  bool enabled = false;              ///< the key is present
+  double max_volume = 0.0;           ///< `volume`: pieces below this volume fade, m^3, >= 0
+  int lifetime_frames = 60;          ///< frames a fading piece stays in the world, >= 1
+};
+
+/// `debris`: dust particles per event (off without the key).
+struct DebrisSpec {
+  bool enabled = false;              ///< the key is present
+  double per_area = 0.0;             ///< particles per m^2 of new cut area, >= 0
+  int per_impact = 0;                ///< particles per impact that fractures something, >= 0
+  double speed = 3.0;                ///< initial speed, m/s, >= 0
+  int lifetime_frames = 90;          ///< frames a particle lives, >= 1
+};
+
 /// A loaded, checked case. Units are SI.
 struct Case {
   std::string name;                        ///< `name`; defaults to the case file's stem
@@ -156,6 +193,9 @@ struct Case {
   double budget_ms = 33.3;                 ///< frame-time budget, ms, > 0
   GridSpec grid;                           ///< `grid`
   Needs needs;                             ///< `needs`
+  ScheduleSpec schedule;                   ///< `schedule`
+  FadeOutSpec fade_out;                    ///< `fade_out`
+  DebrisSpec debris;                       ///< `debris`
 };
 
 }  // namespace shatter

@@ -204,7 +204,57 @@ Needs read_needs(JsonReader& r, const json& v) {
   return needs;
 }
 
+ScheduleSpec read_schedule(JsonReader& r, const json& v) {
+  ScheduleSpec s;
+  if (!r.object(v, "schedule", {"mode", "prefetch_frames", "work_budget_ms"})) return s;
+  std::string mode;
+  if (r.read(v, "schedule", "mode", mode)) {
+    if (const auto m = schedule_mode_from_name(mode))
+      s.mode = *m;
+    else
+      r.fail("schedule.mode", fmt::format("unknown mode \"{}\" (allowed: immediate, prefetch, amortized)", mode));
+  }
+  if (r.read(v, "schedule", "prefetch_frames", s.prefetch_frames)) r.at_least("schedule.prefetch_frames", s.prefetch_frames, 0);
+  if (r.read(v, "schedule", "work_budget_ms", s.work_budget_ms)) r.non_negative("schedule.work_budget_ms", s.work_budget_ms);
+  return s;
+}
+
+FadeOutSpec read_fade_out(JsonReader& r, const json& v) {
+  FadeOutSpec f;
+  if (!r.object(v, "fade_out", {"volume", "lifetime_frames"})) return f;
+  f.enabled = true;
+  if (r.read_required(v, "fade_out", "volume", f.max_volume)) r.non_negative("fade_out.volume", f.max_volume);
+  if (r.read(v, "fade_out", "lifetime_frames", f.lifetime_frames)) r.at_least("fade_out.lifetime_frames", f.lifetime_frames, 1);
+  return f;
+}
+
+DebrisSpec read_debris(JsonReader& r, const json& v) {
+  DebrisSpec d;
+  if (!r.object(v, "debris", {"per_area", "per_impact", "speed", "lifetime_frames"})) return d;
+  d.enabled = true;
+  if (r.read(v, "debris", "per_area", d.per_area)) r.non_negative("debris.per_area", d.per_area);
+  if (r.read(v, "debris", "per_impact", d.per_impact)) r.at_least("debris.per_impact", d.per_impact, 0);
+  if (r.read(v, "debris", "speed", d.speed)) r.non_negative("debris.speed", d.speed);
+  if (r.read(v, "debris", "lifetime_frames", d.lifetime_frames)) r.at_least("debris.lifetime_frames", d.lifetime_frames, 1);
+  return d;
+}
+
 }  // namespace
+
+std::string_view schedule_mode_name(ScheduleMode mode) {
+  switch (mode) {
+    case ScheduleMode::immediate: return "immediate";
+    case ScheduleMode::prefetch: return "prefetch";
+    case ScheduleMode::amortized: return "amortized";
+  }
+  return "immediate";
+}
+
+std::optional<ScheduleMode> schedule_mode_from_name(std::string_view name) {
+  for (const ScheduleMode m : {ScheduleMode::immediate, ScheduleMode::prefetch, ScheduleMode::amortized})
+    if (schedule_mode_name(m) == name) return m;
+  return std::nullopt;
+}
 
 Result<Case> parse_case(std::string_view text, const fs::path& source) {
   const std::string file = source.empty() ? std::string("<case>") : source.string();
@@ -213,7 +263,7 @@ Result<Case> parse_case(std::string_view text, const fs::path& source) {
   const json& root = *parsed;
   JsonReader r(file);
   if (!r.object(root, "", {"name", "description", "mesh", "material", "gravity", "anchors", "prefracture",
-                           "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs"}))
+                           "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs", "schedule", "fade_out", "debris"}))
     return r.error();
 
   Case c;
@@ -236,6 +286,9 @@ Result<Case> parse_case(std::string_view text, const fs::path& source) {
   if (r.read(root, "", "budget_ms", c.budget_ms)) r.positive("budget_ms", c.budget_ms);
   if (root.contains("grid")) c.grid = read_grid(r, root["grid"]);
   if (root.contains("needs")) c.needs = read_needs(r, root["needs"]);
+  if (root.contains("schedule")) c.schedule = read_schedule(r, root["schedule"]);
+  if (root.contains("fade_out")) c.fade_out = read_fade_out(r, root["fade_out"]);
+  if (root.contains("debris")) c.debris = read_debris(r, root["debris"]);
   if (r.failed()) return r.error();
   return c;
 }

@@ -52,6 +52,8 @@ struct GridCommandOptions {
   std::string metric = "time";
   bool update_baseline = false;
   std::string baseline_dir = "results/baselines";
+  std::string schedule;
+  double latency_budget_ms = 50.0;
 };
 
 /// "K/N" -> (K, N); false when malformed.
@@ -128,9 +130,13 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   if (!o.runtime.empty()) cmd += " --runtime " + list(o.runtime);
   if (o.no_skip) cmd += " --no-skip";
   if (o.same_seed) cmd += " --same-seed";
+  if (!o.schedule.empty()) cmd += " --schedule '" + o.schedule + "'";
+  cmd += fmt::format(" --latency-budget-ms {}", o.latency_budget_ms);
   if (o.no_cache) cmd += " --no-cache";
   if (!o.cache_dir.empty()) cmd += " --cache-dir '" + o.cache_dir + "'";
   if (!o.shard.empty()) cmd += " --shard " + o.shard;
+  if (!o.schedule.empty()) cmd += " --schedule " + o.schedule;
+  cmd += fmt::format(" --latency-budget-ms {}", o.latency_budget_ms);
   cmd += fmt::format(" >/dev/null 2>'{}'", (folder / "child.log").string());
   const int status = std::system(cmd.c_str());
   const auto cleanup = [&] { std::filesystem::remove_all(folder); };
@@ -178,6 +184,14 @@ int run_grid_command(const GridCommandOptions& o) {
   options.no_skip = o.no_skip;
   options.same_seed = o.same_seed;
   options.count_instructions = o.metric == "instructions" && instruction_marks::running_on_valgrind();
+  if (!o.schedule.empty()) {
+    options.schedule = schedule_mode_from_name(o.schedule);
+    if (!options.schedule)
+      return fail_input("--schedule: unknown mode \"" + o.schedule + "\" (allowed: immediate, prefetch, amortized)");
+  }
+  if (!(o.latency_budget_ms > 0.0) || !std::isfinite(o.latency_budget_ms))
+    return fail_input(fmt::format("--latency-budget-ms: must be a finite number > 0, got {}", o.latency_budget_ms));
+  options.latency_budget_ms = o.latency_budget_ms;
   if (!o.shard.empty() && !parse_shard(o.shard, options.shard_index, options.shard_count))
     return fail_input("--shard: expected K/N (e.g. 0/4), got \"" + o.shard + "\"");
   if (o.format != "shatter" && o.format != "gbench")
@@ -261,6 +275,8 @@ int run_grid_command(const GridCommandOptions& o) {
       JunitCase jc{fmt::format("cell {} x {}", cell.prefracture, cell.runtime), suite.name, cell.worst_frame_ms / 1000.0, {}};
       if (!instructions && !cell.within_budget)
         jc.failure = fmt::format("worst frame {:.3f} ms > budget {:g} ms", cell.worst_frame_ms, grid->budget_ms);
+      else if (!instructions && !cell.within_latency_budget)
+        jc.failure = fmt::format("latency {:.3f} ms > budget {:g} ms", cell.latency_ms, grid->latency_budget_ms);
       suite.cases.push_back(std::move(jc));
     }
     if (Status s = write_file_atomically(o.junit, junit_xml({suite})); !s) return fail_input("--junit: " + s.error().message);
@@ -270,6 +286,13 @@ int run_grid_command(const GridCommandOptions& o) {
     if (!cell.within_budget)
       std::fprintf(stderr, "shatterbench: gate failed: cell %d x %d: worst frame %.3f ms > budget %g ms\n",
                    cell.prefracture, cell.runtime, cell.worst_frame_ms, grid->budget_ms);
+  for (const GridCell& cell : grid->cells)
+    if (!cell.within_latency_budget)
+      std::fprintf(stderr,
+                   "shatterbench: gate failed: cell %d x %d: latency %.3f ms (%g frames, schedule %s) > latency "
+                   "budget %g ms\n",
+                   cell.prefracture, cell.runtime, cell.latency_ms, cell.latency_frames, cell.schedule.c_str(),
+                   grid->latency_budget_ms);
   return exit_gate_failed;
 }
 
@@ -297,6 +320,10 @@ void add_grid_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--same-seed", o->same_seed,
                 "Every repetition repeats the case's seed (the same workload): for regression gates");
   cmd->add_flag("--no-skip", o->no_skip, "Turn every automatic stage skip off (cache, box culling, partial re-solves)");
+  cmd->add_option("--schedule", o->schedule,
+                  "Schedule of the runtime event: immediate, prefetch or amortized (default: the case's schedule.mode)");
+  cmd->add_option("--latency-budget-ms", o->latency_budget_ms,
+                  "Gate on each cell's latency, trigger to visible at 60 Hz, in ms (default 50)");
   cmd->add_option("--cache-dir", o->cache_dir, "Pre-fracture cache folder (default: $SHATTERBENCH_CACHE, "
                                                "$XDG_CACHE_HOME/shatterbench or ~/.cache/shatterbench)");
   cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the pre-fracture cache");

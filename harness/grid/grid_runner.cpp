@@ -59,6 +59,18 @@ GridSample sample_of(const RunResult& run) {
   s.falling_clusters = static_cast<int>(run.falling_clusters.size());
   s.bodies = run.bodies;
   s.solver = run.solver;
+  s.latency_ms = run.latency.ms;
+  s.latency_frames = run.latency.frames;
+  s.latency_after_impact_frames = run.latency.after_impact;
+  s.trigger_frame = run.latency.visible_frame >= 0 ? run.latency.trigger_frame : -1;
+  s.visible_frame = run.latency.visible_frame;
+  s.event_steps = static_cast<int>(run.step_ms.size());
+  s.largest_step_ms = run.largest_step_ms;
+  s.worst_work_ms = run.frame_work_ms.empty() ? 0.0 : *std::max_element(run.frame_work_ms.begin(), run.frame_work_ms.end());
+  s.bodies_peak = run.bodies_peak;
+  s.faded = run.faded;
+  s.particles_spawned = run.particles_spawned;
+  s.particles_peak = run.particles_peak;
   return s;
 }
 
@@ -103,8 +115,28 @@ void merge_stages(GridCell& cell, const RunResult& run) {
 
 }  // namespace
 
+void summarise_schedule(GridCell& cell, double latency_budget_ms) {
+  std::vector<double> latency, frames, bodies, peak, particles;
+  cell.largest_step_ms = 0.0;
+  for (const GridSample& s : cell.samples) {
+    latency.push_back(s.latency_ms);
+    frames.push_back(s.latency_frames);
+    bodies.push_back(s.bodies);
+    peak.push_back(s.bodies_peak);
+    particles.push_back(s.particles_peak);
+    cell.largest_step_ms = std::max(cell.largest_step_ms, s.largest_step_ms);
+  }
+  cell.latency_ms = median_of(latency);
+  cell.latency_frames = median_of(frames);
+  cell.bodies = median_of(bodies);
+  cell.bodies_peak = median_of(peak);
+  cell.particles_peak = median_of(particles);
+  cell.within_latency_budget = cell.latency_ms <= latency_budget_ms;
+}
+
 bool GridResult::passed() const {
-  return std::all_of(cells.begin(), cells.end(), [](const GridCell& c) { return c.within_budget; });
+  return std::all_of(cells.begin(), cells.end(),
+                     [](const GridCell& c) { return c.within_budget && c.within_latency_budget; });
 }
 
 Status check_grid_options(const Case& c, const GridOptions& o) {
@@ -125,6 +157,8 @@ Status check_grid_options(const Case& c, const GridOptions& o) {
   }
   if (!std::isfinite(o.budget_ms) || o.budget_ms < 0.0)
     return Error{"--budget-ms: must be a finite number > 0, got " + std::to_string(o.budget_ms)};
+  if (!std::isfinite(o.latency_budget_ms) || !(o.latency_budget_ms > 0.0))
+    return Error{"--latency-budget-ms: must be a finite number > 0, got " + std::to_string(o.latency_budget_ms)};
   if (o.repetitions < 1) return Error{"--repetitions: must be >= 1, got " + std::to_string(o.repetitions)};
   if (o.frames < 0) return Error{"--frames: must be >= 1, got " + std::to_string(o.frames)};
   if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
@@ -149,6 +183,8 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
 
   GridResult out;
   out.budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
+  out.latency_budget_ms = o.latency_budget_ms;
+  const ScheduleMode schedule = o.schedule.value_or(c.schedule.mode);
   out.repetitions = o.repetitions;
   out.frames = o.frames > 0 ? o.frames : c.frames;
   out.no_skip = o.no_skip;
@@ -172,6 +208,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
                                                           : o.fracturer;
       cell.fracturer = o.fracturer.empty() ? c.runtime.fracturer : o.fracturer;
       cell.stress = o.stress_model.empty() ? c.stress.model : o.stress_model;
+      cell.schedule = std::string(schedule_mode_name(schedule));
       for (int rep = 0; rep < o.repetitions; ++rep) {
         RunOptions run;
         run.prefracture_fragments = p;
@@ -186,6 +223,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
         run.no_skip = o.no_skip;
         run.cache = o.cache;
         run.partition_samples = o.partition_samples;
+        run.schedule = schedule;
         instruction_marks::set_run(p, r, rep);
         const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
         Result<RunResult> result = run_destruction(prepared, run);
@@ -204,6 +242,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
       cell.stages_ms = median_stages(cell.samples, &GridSample::stages_ms);
       cell.setup_ms = median_stages(cell.samples, &GridSample::setup_ms);
       cell.within_budget = cell.worst_frame_ms <= out.budget_ms;
+      summarise_schedule(cell, out.latency_budget_ms);
       out.cells.push_back(std::move(cell));
     }
   }

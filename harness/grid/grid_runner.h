@@ -37,6 +37,8 @@ struct GridOptions {
   int shard_index = 0;                 ///< run the cells i with i % shard_count == shard_index
   int shard_count = 1;                 ///< number of shards (1: the whole grid)
   bool count_instructions = false;     ///< mark stage boundaries for the instruction counter (callgrind)
+  std::optional<ScheduleMode> schedule;  ///< schedule mode of every run (none: the case's schedule.mode)
+  double latency_budget_ms = 50.0;     ///< gate on each cell's latency_ms (trigger to visible), ms, > 0
   /// Called after each run with (runs done, runs in all); may be empty.
   std::function<void(int, int)> progress;
 };
@@ -72,6 +74,18 @@ struct GridSample {
   int bodies = 0;                                ///< physics bodies at the end
   SolverReport solver;                           ///< stress solves summed
   std::optional<InstructionCounts> instructions; ///< instruction mode only
+  double latency_ms = 0.0;                       ///< trigger to visible at 60 Hz, the slowest event (EventLatency::ms)
+  int latency_frames = 0;                        ///< its frames, trigger to visible, both counted
+  int latency_after_impact_frames = 0;           ///< its frames from the impact to visible
+  int trigger_frame = -1;                        ///< its trigger frame (-1: nothing became visible)
+  int visible_frame = -1;                        ///< its visible frame
+  int event_steps = 0;                           ///< event steps run (docs/pipeline.md section 6)
+  double largest_step_ms = 0.0;                  ///< the largest event step
+  double worst_work_ms = 0.0;                    ///< the most event work done in one frame
+  int bodies_peak = 0;                           ///< most bodies in the world at the end of a frame
+  int faded = 0;                                 ///< runtime pieces removed by the fade-out
+  int particles_spawned = 0;                     ///< debris particles spawned
+  int particles_peak = 0;                        ///< most particles alive at the end of a frame
 };
 
 /// Worst error figures over a cell's repetitions.
@@ -105,11 +119,20 @@ struct GridCell {
   std::vector<std::string> stages_run; ///< union over repetitions, in data-flow order
   std::vector<StageSkip> stages_skipped;  ///< union over repetitions, first seen first
   bool within_budget = true;           ///< worst_frame_ms <= budget
+  std::string schedule = "immediate";  ///< schedule mode of the runs
+  double latency_ms = 0.0;             ///< median over repetitions of latency_ms
+  double latency_frames = 0.0;         ///< median over repetitions of latency_frames
+  double bodies = 0.0;                 ///< median over repetitions of the bodies at the end
+  double bodies_peak = 0.0;            ///< median over repetitions of bodies_peak
+  double particles_peak = 0.0;         ///< median over repetitions of particles_peak
+  double largest_step_ms = 0.0;        ///< largest event step over repetitions
+  bool within_latency_budget = true;   ///< latency_ms <= latency budget
 };
 
 /// A whole grid.
 struct GridResult {
   double budget_ms = 0.0;              ///< the budget the cells were judged against
+  double latency_budget_ms = 50.0;     ///< the latency budget the cells were judged against
   int repetitions = 0;                 ///< runs per cell
   int frames = 0;                      ///< frames per run
   bool no_skip = false;                ///< automatic skips were off
@@ -120,13 +143,17 @@ struct GridResult {
   int shard_index = 0;                 ///< which shard this is (see GridOptions)
   int shard_count = 1;                 ///< of how many
 
-  /// True when every cell is within the budget.
+  /// True when every cell is within the frame budget and the latency budget.
   [[nodiscard]] bool passed() const;
 };
 
 /// Checks `options` against `c` before anything runs: algorithm names exist (errors name the flag or
 /// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1.
 Status check_grid_options(const Case& c, const GridOptions& options);
+
+/// Fills `cell`'s schedule summary (latency, bodies, particles: medians over its samples) and judges
+/// its latency against `latency_budget_ms`.
+void summarise_schedule(GridCell& cell, double latency_budget_ms);
 
 /// Runs the grid of `prepared` (options checked by check_grid_options).
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options);

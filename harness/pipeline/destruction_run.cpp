@@ -6,12 +6,14 @@
 #include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_mesh.h"
+#include "harness/pipeline/debris_field.h"
 #include "harness/pipeline/physics/physics_world.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <chrono>
+#include <deque>
 #include <memory>
 
 namespace shatter {
@@ -52,6 +54,28 @@ StagePlan plan_for(const Needs& n) {
   return p;
 }
 
+/// Pieces prepared as colliders per step of an amortized event.
+constexpr std::size_t kColliderBatch = 4;
+
+/// What a runtime event does next (docs/pipeline.md section 6); each phase is one or more steps.
+enum class Phase { fracture, bond_update, stress, falling_clusters, colliders, swap, done };
+
+/// One runtime event from its trigger until its result is in the world.
+struct PendingEvent {
+  const Impact* impact = nullptr;
+  int index = 0;                             // event index, in impact order (seeds)
+  int impact_frame = 0;
+  int trigger_frame = 0;
+  int visible_frame = -1;                    // frame of the swap step, -1 until then (or when nothing was hit)
+  Phase phase = Phase::fracture;
+  bool selected = false;                     // hit fragments chosen
+  std::vector<int> hit;
+  std::vector<std::vector<Fragment>> pieces; // per hit fragment fractured so far
+  std::vector<std::vector<int>> falling;
+  std::vector<int> piece_bodies;             // prepared bodies of the pieces, flat
+  std::vector<int> cluster_bodies;           // prepared bodies of the falling clusters
+};
+
 /// Everything a run keeps between frames.
 class Run {
  public:
@@ -66,7 +90,10 @@ class Run {
   Status build_bonds();
   Status settle();
   void make_colliders();
-  Status event(int frame, const Impact& impact, int event_index);
+  Status step(PendingEvent& e);
+  Status timed_step(PendingEvent& e);
+  Status event_work(bool last_frame);
+  void fade_out();
   Status stress_after(std::span<const int> hit, StageClocks& times);
   std::vector<std::vector<int>> newly_falling();
   void measure_runtime_error(std::span<const int> hit, std::span<const std::vector<Fragment>> pieces);
@@ -87,6 +114,16 @@ class Run {
   std::vector<std::uint8_t> anchored_;     // per fragment: overlaps an anchor region
   std::vector<int> static_body_;           // per fragment: its static body id, or -1
   std::unique_ptr<PhysicsWorld> world_;
+
+  ScheduleMode schedule_ = ScheduleMode::immediate;
+  int frame_ = 0;                          // the frame being run
+  std::deque<PendingEvent*> queue_;        // triggered events not yet done, in impact order
+  struct Fading {
+    int body;
+    int visible_frame;
+  };
+  std::vector<Fading> fading_;             // runtime pieces fading out
+  std::unique_ptr<DebrisField> debris_;    // particles (case key debris), or none
 };
 
 Status Run::create_algorithms() {
@@ -316,91 +353,211 @@ void Run::measure_runtime_error(std::span<const int> hit, std::span<const std::v
   }
 }
 
-Status Run::event(int frame, const Impact& impact, int event_index) {
+Status Run::step(PendingEvent& e) {
   StageClocks& t = r_.frame_stages;
-  std::vector<int> hit;
-  std::vector<std::vector<Fragment>> pieces;
-  {
-    StageTimer timer(t, Stage::runtime_fracture);
-    NearImpactOptions near;
-    near.eligible = standing_;
-    near.cull_by_box = !o_.no_skip;
-    hit = fragments_near_impact(r_.fragments, impact, near);
-    FractureParams params;
-    params.fragments = runtime_fragments_;
-    params.impact = impact;
-    for (std::size_t k = 0; k < hit.size(); ++k) {
-      params.seed = r_.runtime_seed + 1000003ULL * static_cast<std::uint64_t>(event_index) + k;
-      auto p = runtime_fracturer_->fracture(r_.fragments[static_cast<std::size_t>(hit[k])].mesh, params);
-      if (!p) return Error{c_.name + ": runtime fracture at frame " + std::to_string(frame) + ": " + p.error().message};
-      pieces.push_back(std::move(*p));
+  const Impact& impact = *e.impact;
+  switch (e.phase) {
+    case Phase::fracture: {
+      StageTimer timer(t, Stage::runtime_fracture);
+      if (!e.selected) {
+        NearImpactOptions near;
+        near.eligible = standing_;
+        near.cull_by_box = !o_.no_skip;
+        e.hit = fragments_near_impact(r_.fragments, impact, near);
+        e.selected = true;
+        if (e.hit.empty()) {
+          r_.stages.skipped(Stage::runtime_fracture,
+                            fmt::format("the impact at frame {} reaches no standing fragment (radius {} m): no "
+                                        "runtime fracture, nothing after it",
+                                        e.impact_frame, impact.radius));
+          e.phase = Phase::done;
+          return {};
+        }
+        if (!o_.no_skip && impact.radius > 0) {
+          const auto standing = std::count(standing_.begin(), standing_.end(), std::uint8_t{1});
+          r_.stages.skipped(Stage::runtime_fracture,
+                            fmt::format("{} of {} standing fragments outside the impact radius: not fractured, not copied",
+                                        standing - static_cast<long>(e.hit.size()), standing));
+        }
+      }
+      // One hit fragment per step.
+      FractureParams params;
+      params.fragments = runtime_fragments_;
+      params.impact = impact;
+      const std::size_t k = e.pieces.size();
+      params.seed = r_.runtime_seed + 1000003ULL * static_cast<std::uint64_t>(e.index) + k;
+      auto p = runtime_fracturer_->fracture(r_.fragments[static_cast<std::size_t>(e.hit[k])].mesh, params);
+      if (!p) return Error{c_.name + ": runtime fracture at frame " + std::to_string(e.impact_frame) + ": " + p.error().message};
+      e.pieces.push_back(std::move(*p));
+      if (e.pieces.size() == e.hit.size()) {
+        r_.stages.ran(Stage::runtime_fracture);
+        e.phase = Phase::bond_update;
+      }
+      return {};
     }
+    case Phase::bond_update:
+      if (plan_.bonds) {
+        StageTimer timer(t, Stage::bond_update);
+        for (const int f : e.hit)
+          for (const int b : r_.graph.node_bonds[static_cast<std::size_t>(f)]) r_.broken[static_cast<std::size_t>(b)] = 1;
+        r_.stages.ran(Stage::bond_update);
+      } else {
+        r_.stages.skipped(Stage::bond_update, "no bonds (case needs)");
+      }
+      for (const int f : e.hit) standing_[static_cast<std::size_t>(f)] = 0;
+      e.phase = plan_.bonds ? Phase::stress : (world_ ? Phase::colliders : Phase::swap);
+      return {};
+    case Phase::stress:
+      if (Status s = stress_after(e.hit, t); !s) return s;
+      e.phase = Phase::falling_clusters;
+      return {};
+    case Phase::falling_clusters: {
+      StageTimer timer(t, Stage::falling_clusters);
+      e.falling = newly_falling();
+      for (const std::vector<int>& cluster : e.falling)
+        for (const int f : cluster) standing_[static_cast<std::size_t>(f)] = 0;
+      r_.stages.ran(Stage::falling_clusters);
+      e.phase = world_ ? Phase::colliders : Phase::swap;
+      return {};
+    }
+    case Phase::colliders: {
+      // A batch of pieces, or one falling cluster, per step; prepared, not yet in the world.
+      StageTimer timer(t, Stage::colliders);
+      const double density = c_.material.density;
+      std::size_t total = 0;
+      for (const auto& list : e.pieces) total += list.size();
+      if (e.piece_bodies.size() < total) {
+        std::size_t flat = 0;
+        const std::size_t until = std::min(total, e.piece_bodies.size() + kColliderBatch);
+        for (const auto& list : e.pieces)
+          for (const Fragment& p : list) {
+            if (flat >= e.piece_bodies.size() && flat < until) e.piece_bodies.push_back(world_->prepare_fragment(p, density));
+            ++flat;
+          }
+      } else if (e.cluster_bodies.size() < e.falling.size()) {
+        std::vector<Fragment> members;
+        for (const int f : e.falling[e.cluster_bodies.size()]) members.push_back(r_.fragments[static_cast<std::size_t>(f)]);
+        e.cluster_bodies.push_back(world_->prepare_cluster(members, density));
+      }
+      if (e.piece_bodies.size() == total && e.cluster_bodies.size() == e.falling.size()) e.phase = Phase::swap;
+      return {};
+    }
+    case Phase::swap: {
+      // The event's result takes part in the world: hit and falling static bodies out, new bodies in.
+      if (world_) {
+        StageTimer timer(t, Stage::colliders);
+        const double density = c_.material.density;
+        for (const int f : e.hit) world_->remove(static_body_[static_cast<std::size_t>(f)]);
+        double total_mass = 0.0;
+        for (const auto& list : e.pieces)
+          for (const Fragment& p : list) total_mass += density * p.mass.volume;
+        const Vec3 velocity_change =
+            total_mass > 0 ? Vec3(impact.direction * (impact.impulse / total_mass)) : Vec3::Zero();
+        std::size_t flat = 0;
+        for (const auto& list : e.pieces) {
+          for (const Fragment& p : list) {
+            const int body = e.piece_bodies[flat++];
+            world_->insert(body);
+            if (impact.impulse > 0) world_->apply_impulse(body, velocity_change * (density * p.mass.volume), p.mass.centroid);
+            if (c_.fade_out.enabled && p.mass.volume < c_.fade_out.max_volume) fading_.push_back({body, frame_});
+          }
+        }
+        for (std::size_t k = 0; k < e.falling.size(); ++k) {
+          for (const int f : e.falling[k]) world_->remove(static_body_[static_cast<std::size_t>(f)]);
+          world_->insert(e.cluster_bodies[k]);
+        }
+      }
+      if (debris_) {
+        StageTimer timer(t, Stage::debris);
+        double area = 0.0;
+        std::vector<Vec3> origins;
+        for (std::size_t k = 0; k < e.hit.size(); ++k) {
+          area += new_cut_area(r_.fragments[static_cast<std::size_t>(e.hit[k])], e.pieces[k]);
+          for (const Fragment& p : e.pieces[k]) origins.push_back(p.mass.centroid);
+        }
+        r_.particles_spawned += debris_->spawn(debris_->count_for(area), origins,
+                                               r_.runtime_seed + 1000003ULL * static_cast<std::uint64_t>(e.index) + 777767ULL);
+        r_.stages.ran(Stage::debris);
+      }
+      for (std::size_t k = 0; k < e.hit.size(); ++k) {
+        r_.hit.push_back(e.hit[k]);
+        r_.pieces.push_back(std::move(e.pieces[k]));
+      }
+      for (std::vector<int>& cluster : e.falling) r_.falling_clusters.push_back(std::move(cluster));
+      e.visible_frame = frame_;
+      e.phase = Phase::done;
+      return {};
+    }
+    case Phase::done:
+      return {};
   }
-  if (hit.empty()) {
-    r_.stages.skipped(Stage::runtime_fracture,
-                      fmt::format("the impact at frame {} reaches no standing fragment (radius {} m): no runtime "
-                                  "fracture, nothing after it",
-                                  frame, impact.radius));
+  return {};
+}
+
+Status Run::timed_step(PendingEvent& e) {
+  const auto start = std::chrono::steady_clock::now();
+  Status s = step(e);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  r_.step_ms.push_back(ms);
+  r_.largest_step_ms = std::max(r_.largest_step_ms, ms);
+  r_.frame_work_ms[static_cast<std::size_t>(frame_)] += ms;
+  return s;
+}
+
+Status Run::event_work(bool last_frame) {
+  const ScheduleSpec& spec = c_.schedule;
+  if (schedule_ == ScheduleMode::amortized) {
+    // At least one step a frame; no step starts once the frame's event work reaches the budget (the
+    // last frame finishes what is left): a frame spends at most the budget plus one step.
+    bool first = true;
+    while (!queue_.empty() && queue_.front()->impact_frame <= frame_) {
+      if (!first && !last_frame && r_.frame_work_ms[static_cast<std::size_t>(frame_)] >= spec.work_budget_ms) break;
+      if (Status s = timed_step(*queue_.front()); !s) return s;
+      first = false;
+      if (queue_.front()->phase == Phase::done) queue_.pop_front();
+    }
     return {};
   }
-  r_.stages.ran(Stage::runtime_fracture);
-  if (!o_.no_skip && impact.radius > 0) {
-    const auto standing = std::count(standing_.begin(), standing_.end(), std::uint8_t{1});
-    r_.stages.skipped(Stage::runtime_fracture,
-                      fmt::format("{} of {} standing fragments outside the impact radius: not fractured, not copied",
-                                  standing - static_cast<long>(hit.size()), standing));
+  if (schedule_ == ScheduleMode::prefetch) {
+    // Every triggered event's fracture now (the projectile is in flight); the rest when it lands.
+    for (PendingEvent* e : queue_)
+      while (e->phase == Phase::fracture)
+        if (Status s = timed_step(*e); !s) return s;
   }
-  if (plan_.bonds) {
-    StageTimer timer(t, Stage::bond_update);
-    for (const int f : hit)
-      for (const int b : r_.graph.node_bonds[static_cast<std::size_t>(f)]) r_.broken[static_cast<std::size_t>(b)] = 1;
-    r_.stages.ran(Stage::bond_update);
-  } else {
-    r_.stages.skipped(Stage::bond_update, "no bonds (case needs)");
+  while (!queue_.empty() && queue_.front()->impact_frame <= frame_) {
+    while (queue_.front()->phase != Phase::done)
+      if (Status s = timed_step(*queue_.front()); !s) return s;
+    queue_.pop_front();
   }
-  for (const int f : hit) standing_[static_cast<std::size_t>(f)] = 0;
-
-  std::vector<std::vector<int>> falling;
-  if (plan_.bonds) {
-    if (Status s = stress_after(hit, t); !s) return s;
-    StageTimer timer(t, Stage::falling_clusters);
-    falling = newly_falling();
-    for (const std::vector<int>& cluster : falling)
-      for (const int f : cluster) standing_[static_cast<std::size_t>(f)] = 0;
-    r_.stages.ran(Stage::falling_clusters);
-  }
-
-  if (world_) {
-    StageTimer timer(t, Stage::colliders);
-    const double density = c_.material.density;
-    for (const int f : hit) world_->remove(static_body_[static_cast<std::size_t>(f)]);
-    double total_mass = 0.0;
-    for (const auto& list : pieces)
-      for (const Fragment& p : list) total_mass += density * p.mass.volume;
-    const Vec3 velocity_change = total_mass > 0 ? Vec3(impact.direction * (impact.impulse / total_mass)) : Vec3::Zero();
-    for (const auto& list : pieces) {
-      for (const Fragment& p : list) {
-        const int body = world_->add_fragment(p, density);
-        const double mass = density * p.mass.volume;
-        if (impact.impulse > 0) world_->apply_impulse(body, velocity_change * mass, p.mass.centroid);
-      }
-    }
-    std::vector<Fragment> members;
-    for (const std::vector<int>& cluster : falling) {
-      members.clear();
-      for (const int f : cluster) {
-        world_->remove(static_body_[static_cast<std::size_t>(f)]);
-        members.push_back(r_.fragments[static_cast<std::size_t>(f)]);
-      }
-      world_->add_cluster(members, density);
-    }
-  }
-  for (std::size_t k = 0; k < hit.size(); ++k) {
-    r_.hit.push_back(hit[k]);
-    r_.pieces.push_back(std::move(pieces[k]));
-  }
-  for (std::vector<int>& cluster : falling) r_.falling_clusters.push_back(std::move(cluster));
   return {};
+}
+
+void Run::fade_out() {
+  if (fading_.empty()) return;
+  StageTimer timer(r_.frame_stages, Stage::colliders);
+  const int lifetime = c_.fade_out.lifetime_frames;
+  std::size_t kept = 0;
+  for (const Fading& f : fading_) {
+    const int age = frame_ - f.visible_frame;
+    if (age <= 0) {
+      fading_[kept++] = f;
+    } else if (age >= lifetime) {
+      world_->remove(f.body);
+      ++r_.faded;
+    } else {
+      world_->set_scale(f.body, 1.0 - static_cast<double>(age) / lifetime);
+      fading_[kept++] = f;
+    }
+  }
+  fading_.resize(kept);
+}
+
+/// Trigger to visible at 60 Hz: each frame lasts max(its wall time, 1/60 s). Summed in units of
+/// 1/60 ms so that frames within the period add up exactly (3 frames: 50 ms, not 50.000000000000007).
+double paced_ms(const std::vector<double>& frame_ms, int first, int last) {
+  double sixtieths = 0.0;
+  for (int f = first; f <= last; ++f) sixtieths += std::max(frame_ms[static_cast<std::size_t>(f)] * 60.0, 1000.0);
+  return sixtieths / 60.0;
 }
 
 Result<RunResult> Run::execute() {
@@ -408,22 +565,49 @@ Result<RunResult> Run::execute() {
   instruction_marks::set_frame(-1);
   if (Status s = setup(); !s) return s.error();
   r_.runtime_seed = c_.prefracture.seed + o_.repetition;
+  schedule_ = o_.schedule.value_or(c_.schedule.mode);
+  r_.schedule = schedule_;
 
   const int frames = o_.frames > 0 ? o_.frames : c_.frames;
   r_.frame_ms.assign(static_cast<std::size_t>(frames), 0.0);
   r_.frame_cpu_ms.assign(static_cast<std::size_t>(frames), 0.0);
-  int event_index = 0;
-  for (int frame = 0; frame < frames; ++frame) {
-    instruction_marks::set_frame(frame);
+  r_.frame_work_ms.assign(static_cast<std::size_t>(frames), 0.0);
+  r_.frame_bodies.assign(static_cast<std::size_t>(frames), 0);
+  r_.frame_particles.assign(static_cast<std::size_t>(frames), 0);
+
+  // Events in the order their impacts land (frame, then file order); an impact after the last frame
+  // of a shortened run lands in the last frame.
+  std::vector<PendingEvent> events;
+  for (const ImpactEvent& e : c_.impacts) {
+    PendingEvent p;
+    p.impact = &e.impact;
+    p.impact_frame = std::min(e.frame, frames - 1);
+    p.trigger_frame = schedule_ == ScheduleMode::prefetch ? std::max(0, p.impact_frame - c_.schedule.prefetch_frames)
+                                                          : p.impact_frame;
+    events.push_back(std::move(p));
+  }
+  std::stable_sort(events.begin(), events.end(),
+                   [](const PendingEvent& a, const PendingEvent& b) { return a.impact_frame < b.impact_frame; });
+  for (std::size_t i = 0; i < events.size(); ++i) events[i].index = static_cast<int>(i);
+
+  if (c_.debris.enabled) {
+    debris_ = std::make_unique<DebrisField>(c_.debris, c_.gravity, bounding_box(solid_.mesh).min.z());
+  } else {
+    r_.stages.skipped(Stage::debris, "the case has no debris (case key debris)");
+  }
+  if (c_.fade_out.enabled && !world_)
+    r_.stages.skipped(Stage::colliders, "fade-out: no physics world (case needs)");
+
+  std::size_t next = 0;
+  for (frame_ = 0; frame_ < frames; ++frame_) {
+    instruction_marks::set_frame(frame_);
     const double cpu_start = thread_cpu_ms();
     const auto start = std::chrono::steady_clock::now();
     bool event_frame = false;
-    for (const ImpactEvent& e : c_.impacts) {
-      // An impact after the last frame of a shortened run lands in the last frame.
-      if (std::min(e.frame, frames - 1) != frame) continue;
-      event_frame = true;
-      if (Status s = event(frame, e.impact, event_index++); !s) return s.error();
-    }
+    for (const PendingEvent& e : events) event_frame = event_frame || e.impact_frame == frame_;
+    while (next < events.size() && events[next].trigger_frame <= frame_) queue_.push_back(&events[next++]);
+    if (Status s = event_work(frame_ == frames - 1); !s) return s.error();
+    if (world_) fade_out();
     if (world_ && plan_.physics) {
       StageTimer timer(r_.frame_stages, Stage::physics);
 #ifdef SHATTER_PLANTED_SLOWDOWN_SHARE
@@ -434,15 +618,37 @@ Result<RunResult> Run::execute() {
       world_->step();
 #endif
     }
+    if (debris_ && debris_->size() > 0) {
+      StageTimer timer(r_.frame_stages, Stage::debris);
+      debris_->step(1.0 / 60.0);
+    }
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    r_.frame_ms[static_cast<std::size_t>(frame)] = ms;
-    r_.frame_cpu_ms[static_cast<std::size_t>(frame)] = thread_cpu_ms() - cpu_start;
+    const auto f = static_cast<std::size_t>(frame_);
+    r_.frame_ms[f] = ms;
+    r_.frame_cpu_ms[f] = thread_cpu_ms() - cpu_start;
+    r_.frame_bodies[f] = world_ ? world_->body_count() : 0;
+    r_.frame_particles[f] = debris_ ? debris_->size() : 0;
+    r_.bodies_peak = std::max(r_.bodies_peak, r_.frame_bodies[f]);
+    r_.particles_peak = std::max(r_.particles_peak, r_.frame_particles[f]);
     if (event_frame) {
       if (r_.event_frames.empty()) r_.event_ms = ms;
-      r_.event_frames.push_back(frame);
+      r_.event_frames.push_back(frame_);
     }
   }
   if (world_ && plan_.physics) r_.stages.ran(Stage::physics);
+  for (const PendingEvent& e : events) {
+    EventLatency l;
+    l.trigger_frame = e.trigger_frame;
+    l.impact_frame = e.impact_frame;
+    l.visible_frame = e.visible_frame;
+    if (e.visible_frame >= 0) {
+      l.frames = e.visible_frame - e.trigger_frame + 1;
+      l.after_impact = e.visible_frame - e.impact_frame;
+      l.ms = paced_ms(r_.frame_ms, e.trigger_frame, e.visible_frame);
+    }
+    r_.latencies.push_back(l);
+    if (r_.latency.visible_frame < 0 || l.ms > r_.latency.ms) r_.latency = l;
+  }
   measure_runtime_error(r_.hit, r_.pieces);  // after the frames: a measurement, not a stage
   if (world_) r_.bodies = world_->body_count();
   return std::move(r_);

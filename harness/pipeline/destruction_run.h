@@ -35,6 +35,7 @@
 #include "harness/pipeline/stage.h"
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,6 +62,18 @@ struct RunOptions {
   bool no_skip = false;               ///< turn every automatic skip off (see the file comment)
   const PrefractureCache* cache = nullptr;  ///< pre-fracture cache, or none
   int partition_samples = 256;        ///< points of the partition-error test (untimed; 0 skips it)
+  std::optional<ScheduleMode> schedule;  ///< schedule mode (none: the case's schedule.mode)
+};
+
+/// When one runtime event started and when its result took part in the world (docs/pipeline.md
+/// section 6). Frames are indices into RunResult::frame_ms.
+struct EventLatency {
+  int trigger_frame = -1;   ///< the frame the event's work may start in (prefetch: prefetch_frames before the impact)
+  int impact_frame = -1;    ///< the frame the impact lands in
+  int visible_frame = -1;   ///< the frame whose physics step first has the new bodies (-1: the impact fractured nothing)
+  int frames = 0;           ///< visible_frame - trigger_frame + 1: frames from trigger to visible, both counted (0 when not visible)
+  int after_impact = 0;     ///< visible_frame - impact_frame: frames the result lags the impact
+  double ms = 0.0;          ///< trigger to visible at 60 Hz: each frame counted max(its wall time, 1/60 s), ms
 };
 
 /// Error figures of the runtime fracture, over every hit fragment and its pieces.
@@ -95,6 +108,19 @@ struct RunResult {
   int bodies = 0;                           ///< bodies in the physics world at the end
   int stress_rounds = 0;                    ///< rounds of breaking, summed over the stress solves
   SolverReport solver;                      ///< summed over the stress solves
+
+  ScheduleMode schedule = ScheduleMode::immediate;  ///< the schedule the run used
+  std::vector<EventLatency> latencies;      ///< per event, in the order the impacts land
+  EventLatency latency;                     ///< the event with the largest `ms` (all -1/0 without one)
+  std::vector<double> step_ms;              ///< wall time of every event step, in order (docs/pipeline.md section 6)
+  double largest_step_ms = 0.0;             ///< the largest of step_ms
+  std::vector<double> frame_work_ms;        ///< per frame: wall time of the event steps run in it
+  std::vector<int> frame_bodies;            ///< per frame: bodies in the physics world at its end
+  std::vector<int> frame_particles;         ///< per frame: debris particles alive at its end
+  int bodies_peak = 0;                      ///< largest of frame_bodies
+  int faded = 0;                            ///< runtime pieces removed by the fade-out
+  int particles_spawned = 0;                ///< debris particles spawned
+  int particles_peak = 0;                   ///< largest of frame_particles
 
   FractureMetrics prefracture_error;        ///< error figures of the pre-fracture (untimed)
   RuntimeFractureError runtime_error;       ///< error figures of the runtime fracture (untimed)

@@ -15,6 +15,7 @@ std::string_view stage_name(Stage stage) {
     case Stage::falling_clusters: return "falling_clusters";
     case Stage::colliders: return "colliders";
     case Stage::physics: return "physics";
+    case Stage::debris: return "debris";
   }
   return "unknown";
 }

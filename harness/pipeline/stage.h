@@ -29,15 +29,16 @@ enum class Stage : int {
   falling_clusters,  ///< components with no path to an anchor fall
   colliders,         ///< Bullet convex hulls with exact mass properties
   physics,           ///< Bullet steps of 1/60 s
+  debris,            ///< debris and dust particles: spawned per event, integrated each frame
 };
 
 /// Number of stages.
-inline constexpr std::size_t kStageCount = 8;
+inline constexpr std::size_t kStageCount = 9;
 
 /// Every stage in data-flow order.
 inline constexpr std::array<Stage, kStageCount> kAllStages = {
     Stage::prefracture, Stage::bonds,     Stage::runtime_fracture, Stage::bond_update,
-    Stage::stress,      Stage::falling_clusters, Stage::colliders,  Stage::physics};
+    Stage::stress,      Stage::falling_clusters, Stage::colliders,  Stage::physics, Stage::debris};
 
 /// The stage's name in results and tables, e.g. "runtime_fracture".
 std::string_view stage_name(Stage stage);

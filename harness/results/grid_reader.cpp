@@ -69,7 +69,11 @@ std::vector<double> numbers(const Json& j, const std::string& key, const std::st
 StageTimes stages(const Json& j, const std::string& key, const std::string& path) {
   StageTimes out{};
   const Json& o = at(j, key, path);
-  for (const Stage s : kAllStages) out[static_cast<std::size_t>(s)] = number(o, std::string(stage_name(s)), join(path, key));
+  for (const Stage s : kAllStages) {
+    // `debris` came after schema version 1 was first written: a file without it had no debris.
+    if (s == Stage::debris && o.is_object() && !o.contains(std::string(stage_name(s)))) continue;
+    out[static_cast<std::size_t>(s)] = number(o, std::string(stage_name(s)), join(path, key));
+  }
   return out;
 }
 
@@ -111,10 +115,29 @@ GridSample sample(const Json& j, const std::string& path) {
   s.solver.residual = number(solver, "residual", sp);
   s.solver.unknowns = static_cast<int>(integer(solver, "unknowns", sp));
   if (j.contains("instructions")) s.instructions = instructions(j.at("instructions"), join(path, "instructions"));
+  // Schedule keys (docs/results.md): absent in files written before them, read as "no event seen".
+  const auto optional_int = [&](const char* key, int& out) {
+    if (j.contains(key)) out = static_cast<int>(integer(j, key, path));
+  };
+  const auto optional_number = [&](const char* key, double& out) {
+    if (j.contains(key)) out = number(j, key, path);
+  };
+  optional_number("latency_ms", s.latency_ms);
+  optional_int("latency_frames", s.latency_frames);
+  optional_int("latency_after_impact_frames", s.latency_after_impact_frames);
+  optional_int("trigger_frame", s.trigger_frame);
+  optional_int("visible_frame", s.visible_frame);
+  optional_int("event_steps", s.event_steps);
+  optional_number("largest_step_ms", s.largest_step_ms);
+  optional_number("worst_work_ms", s.worst_work_ms);
+  optional_int("bodies_peak", s.bodies_peak);
+  optional_int("faded", s.faded);
+  optional_int("particles_spawned", s.particles_spawned);
+  optional_int("particles_peak", s.particles_peak);
   return s;
 }
 
-GridCell cell(const Json& j, const std::string& path) {
+GridCell cell(const Json& j, const std::string& path, double latency_budget_ms) {
   GridCell c;
   c.prefracture = static_cast<int>(integer(j, "prefracture", path));
   c.runtime = static_cast<int>(integer(j, "runtime", path));
@@ -161,6 +184,15 @@ GridCell cell(const Json& j, const std::string& path) {
   const Json& samples = array(j, "samples", path);
   for (std::size_t i = 0; i < samples.size(); ++i) c.samples.push_back(sample(samples[i], fmt::format("{}.samples[{}]", path, i)));
   if (c.samples.empty()) throw BadKey(join(path, "samples") + ": no samples");
+  summarise_schedule(c, latency_budget_ms);
+  if (j.contains("schedule")) c.schedule = text(j, "schedule", path);
+  if (j.contains("latency_ms")) c.latency_ms = number(j, "latency_ms", path);
+  if (j.contains("latency_frames")) c.latency_frames = number(j, "latency_frames", path);
+  if (j.contains("within_latency_budget")) c.within_latency_budget = boolean(j, "within_latency_budget", path);
+  if (j.contains("largest_step_ms")) c.largest_step_ms = number(j, "largest_step_ms", path);
+  if (j.contains("bodies")) c.bodies = number(j, "bodies", path);
+  if (j.contains("bodies_peak")) c.bodies_peak = number(j, "bodies_peak", path);
+  if (j.contains("particles_peak")) c.particles_peak = number(j, "particles_peak", path);
   return c;
 }
 
@@ -182,6 +214,7 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
     if (out.metric != "time" && out.metric != "instructions")
       return Error{what + ": metric: expected \"time\" or \"instructions\", got \"" + out.metric + "\""};
     out.grid.budget_ms = number(j, "budget_ms", "");
+    if (j.contains("latency_budget_ms")) out.grid.latency_budget_ms = number(j, "latency_budget_ms", "");
     out.grid.repetitions = static_cast<int>(integer(j, "repetitions", ""));
     out.grid.frames = static_cast<int>(integer(j, "frames", ""));
     out.grid.no_skip = boolean(j, "no_skip", "");
@@ -192,7 +225,7 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
       out.grid.shard_count = static_cast<int>(integer(j.at("shard"), "count", "shard"));
     }
     const Json& cells = array(j, "cells", "");
-    for (std::size_t i = 0; i < cells.size(); ++i) out.grid.cells.push_back(cell(cells[i], fmt::format("cells[{}]", i)));
+    for (std::size_t i = 0; i < cells.size(); ++i) out.grid.cells.push_back(cell(cells[i], fmt::format("cells[{}]", i), out.grid.latency_budget_ms));
     return out;
   } catch (const BadKey& e) {
     return Error{what + ": " + e.what()};

@@ -69,7 +69,19 @@ Json sample_json(const GridSample& s) {
           {"broken_bonds", s.broken_bonds},
           {"falling_clusters", s.falling_clusters},
           {"bodies", s.bodies},
-          {"solver", solver_json(s.solver)}};
+          {"solver", solver_json(s.solver)},
+          {"latency_ms", s.latency_ms},
+          {"latency_frames", s.latency_frames},
+          {"latency_after_impact_frames", s.latency_after_impact_frames},
+          {"trigger_frame", s.trigger_frame},
+          {"visible_frame", s.visible_frame},
+          {"event_steps", s.event_steps},
+          {"largest_step_ms", s.largest_step_ms},
+          {"worst_work_ms", s.worst_work_ms},
+          {"bodies_peak", s.bodies_peak},
+          {"faded", s.faded},
+          {"particles_spawned", s.particles_spawned},
+          {"particles_peak", s.particles_peak}};
   if (s.instructions) j["instructions"] = instructions_json(*s.instructions);
   return j;
 }
@@ -93,6 +105,14 @@ Json cell_json(const GridCell& c) {
           {"within_budget", c.within_budget},
           {"stages_run", c.stages_run},
           {"stages_skipped", skipped},
+          {"schedule", c.schedule},
+          {"latency_ms", c.latency_ms},
+          {"latency_frames", c.latency_frames},
+          {"within_latency_budget", c.within_latency_budget},
+          {"largest_step_ms", c.largest_step_ms},
+          {"bodies", c.bodies},
+          {"bodies_peak", c.bodies_peak},
+          {"particles_peak", c.particles_peak},
           {"samples", samples}};
 }
 
@@ -126,6 +146,7 @@ nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::orde
               {"context", to_json(context)},
               {"case", case_block},
               {"budget_ms", grid.budget_ms},
+              {"latency_budget_ms", grid.latency_budget_ms},
               {"repetitions", grid.repetitions},
               {"frames", grid.frames},
               {"no_skip", grid.no_skip},
@@ -141,14 +162,17 @@ std::string grid_to_csv(const GridResult& grid) {
   std::string out = "prefracture,runtime,prefracturer,fracturer,stress,worst_frame_ms,mean_ms,median_ms,p95_ms,p99_ms,"
                     "max_ms,min_ms,event_ms";
   for (const Stage s : kAllStages) out += fmt::format(",{}_ms", stage_name(s));
-  out += ",prefracture_volume_error,runtime_volume_error,within_budget\n";
+  out += ",prefracture_volume_error,runtime_volume_error,within_budget,schedule,latency_ms,latency_frames,bodies,"
+         "bodies_peak,particles_peak,within_latency_budget\n";
   for (const GridCell& c : grid.cells) {
     out += fmt::format("{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}", c.prefracture,
                        c.runtime, c.prefracturer, c.fracturer, c.stress, c.worst_frame_ms, c.frame_ms.mean,
                        c.frame_ms.median, c.frame_ms.p95, c.frame_ms.p99, c.frame_ms.max, c.frame_ms.min, c.event_ms);
     for (const Stage s : kAllStages) out += fmt::format(",{:.6f}", c.stages_ms[static_cast<std::size_t>(s)]);
-    out += fmt::format(",{:.3e},{:.3e},{}\n", c.error.prefracture_volume_error, c.error.runtime_volume_error,
-                       c.within_budget ? "true" : "false");
+    out += fmt::format(",{:.3e},{:.3e},{},{},{:.6f},{:g},{:g},{:g},{:g},{}\n", c.error.prefracture_volume_error,
+                       c.error.runtime_volume_error, c.within_budget ? "true" : "false", c.schedule, c.latency_ms,
+                       c.latency_frames, c.bodies, c.bodies_peak, c.particles_peak,
+                       c.within_latency_budget ? "true" : "false");
   }
   return out;
 }
@@ -165,9 +189,9 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
   if (!grid.cells.empty()) {
     const GridCell& first = grid.cells.front();
     out += fmt::format("Case `{}`: pre-fracture {}, runtime {}, stress {}; worst frame in ms (median over {} "
-                       "repetitions of each one's slowest of {} frames); budget {} ms\n\n",
+                       "repetitions of each one's slowest of {} frames); budget {} ms; schedule {}\n\n",
                        case_name, first.prefracturer, first.fracturer, first.stress, grid.repetitions, grid.frames,
-                       grid.budget_ms);
+                       grid.budget_ms, first.schedule);
   }
   out += "| pre-fracture \\ runtime |";
   for (const int c : cols) out += fmt::format(" {} |", c);
@@ -188,8 +212,38 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
     }
     out += "\n";
   }
-  int failed = 0;
-  for (const GridCell& c : grid.cells) failed += c.within_budget ? 0 : 1;
+  if (!grid.cells.empty()) {
+    out += fmt::format("\nLatency, trigger to visible at 60 Hz: ms (frames), budget {} ms; bodies at the end / peak; "
+                       "particles peak (medians over repetitions)\n\n| pre-fracture \\ runtime |",
+                       grid.latency_budget_ms);
+    for (const int c : cols) out += fmt::format(" {} |", c);
+    out += "\n|---:|";
+    for (std::size_t i = 0; i < cols.size(); ++i) out += "---:|";
+    out += "\n";
+    for (const int r : rows) {
+      out += fmt::format("| {} |", r);
+      for (const int c : cols) {
+        const auto it = at.find({r, c});
+        if (it == at.end()) {
+          out += " |";
+          continue;
+        }
+        const GridCell& g = *it->second;
+        out += fmt::format(" {}{:.1f} ({:g}){} · {:g}/{:g} · {:g} |", g.within_latency_budget ? "" : "**",
+                           g.latency_ms, g.latency_frames, g.within_latency_budget ? "" : " !**", g.bodies,
+                           g.bodies_peak, g.particles_peak);
+      }
+      out += "\n";
+    }
+  }
+  int failed = 0, late = 0;
+  for (const GridCell& c : grid.cells) {
+    failed += c.within_budget ? 0 : 1;
+    late += c.within_latency_budget ? 0 : 1;
+  }
+  if (late > 0)
+    out += fmt::format("\n{} of {} cells over the {} ms latency budget (marked !).\n", late, grid.cells.size(),
+                       grid.latency_budget_ms);
   if (failed == 0) {
     out += fmt::format("\nAll {} cells within the {} ms budget ({:.1f} s).\n", grid.cells.size(), grid.budget_ms,
                        grid.wall_s);

@@ -6,6 +6,8 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <fstream>
+#include <utility>
 #include <string>
 
 namespace {
@@ -89,4 +91,49 @@ TEST_CASE("cli: grid refuses bad input with exit 2, one line, and writes nothing
     REQUIRE_FALSE(std::filesystem::exists(json));
   }
   REQUIRE(std::filesystem::is_empty(dir));
+}
+
+TEST_CASE("cli: grid reports the schedule and latency per cell and gates on the latency budget", "[cli][grid][schedule]") {
+  const auto dir = scratch("latency");
+  const auto json = dir / "grid.json";
+  const std::string cell = " --repetitions 1 --frames 12 --prefracture 10 --runtime 5 --no-cache --json " + json.string();
+  const auto ok = run_cli("grid --case building --schedule prefetch" + cell);
+  INFO(ok.err);
+  REQUIRE(ok.exit_code == 0);
+  const auto j = nlohmann::json::parse(slurp(json));
+  REQUIRE(j.at("latency_budget_ms").get<double>() == 50.0);
+  const auto& c = j.at("cells")[0];
+  REQUIRE(c.at("schedule") == "prefetch");
+  REQUIRE(c.at("latency_frames").get<double>() == 3.0);  // the case's prefetch_frames (2) + the impact frame
+  REQUIRE(c.at("samples")[0].at("latency_after_impact_frames") == 0);
+  REQUIRE(c.at("within_latency_budget").get<bool>());
+  REQUIRE(c.contains("bodies_peak"));
+  REQUIRE(c.at("stages_ms").contains("debris"));
+  REQUIRE(slurp(dir / "grid.csv").find("latency_ms") != std::string::npos);
+
+  const auto late = run_cli("grid --case building --schedule immediate --latency-budget-ms 10" + cell);
+  REQUIRE(late.exit_code == 1);
+  REQUIRE(late.err.find("cell 10 x 5: latency") != std::string::npos);
+}
+
+TEST_CASE("cli: grid refuses an unknown schedule and a bad latency budget with exit 2", "[cli][grid][schedule]") {
+  const auto dir = scratch("bad-schedule");
+  const std::string out = " --frames 1 --repetitions 1 --no-cache --json " + (dir / "grid.json").string();
+  for (const auto& [args, words] : {std::pair<std::string, std::string>{"--schedule later", "--schedule"},
+                                    {"--latency-budget-ms -5", "--latency-budget-ms"},
+                                    {"--latency-budget-ms 0", "--latency-budget-ms"}}) {
+    const auto r = run_cli("grid --case building " + args + out);
+    INFO(args << "\n" << r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(r.err.find(words) != std::string::npos);
+  }
+  const auto bad_case = dir / "bad.json";
+  {
+    std::ofstream f(bad_case);
+    f << R"({"mesh": {"box": {"size": [1, 1, 1]}}, "schedule": {"mode": "amortized", "work_budget_ms": -1}})";
+  }
+  const auto r = run_cli("grid --case " + bad_case.string() + out);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(r.err.find("schedule.work_budget_ms") != std::string::npos);
+  REQUIRE_FALSE(std::filesystem::exists(dir / "grid.json"));
 }

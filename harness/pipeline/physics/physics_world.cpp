@@ -97,6 +97,7 @@ struct Body {
   std::unique_ptr<btCollisionShape> shape;                   ///< the body's collision shape
   std::unique_ptr<btRigidBody> rigid;
   Eigen::Matrix3d principal = Eigen::Matrix3d::Identity();   ///< principal axes (columns), mesh frame
+  bool in_world = true;                                      ///< added to the dynamics world
 };
 
 struct PhysicsWorld::Impl {
@@ -211,7 +212,7 @@ struct PhysicsWorld::Impl {
   }
 
   /// Adds a body made of `fragments` with their combined mass properties at `density`.
-  int add(std::span<const Fragment> fragments, double density, bool is_static) {
+  int add(std::span<const Fragment> fragments, double density, bool is_static, bool in_world = true) {
     require(!fragments.empty(), "a body needs at least one fragment");
     require(std::isfinite(density) && density > 0.0, "density must be finite and > 0 kg/m^3");
     for (const Fragment& f : fragments) require_valid(f);
@@ -244,10 +245,12 @@ struct PhysicsWorld::Impl {
     info.m_restitution = static_cast<btScalar>(settings.restitution);
     b->rigid = std::make_unique<btRigidBody>(info);
     if (!settings.allow_sleeping) b->rigid->setActivationState(DISABLE_DEACTIVATION);
-    world.addRigidBody(b->rigid.get());
-
+    b->in_world = in_world;
+    if (in_world) {
+      world.addRigidBody(b->rigid.get());
+      ++live;
+    }
     bodies.push_back(std::move(b));
-    ++live;
     return static_cast<int>(bodies.size()) - 1;
   }
 };
@@ -275,11 +278,38 @@ int PhysicsWorld::add_cluster(std::span<const Fragment> fragments, double densit
   return impl_->add(fragments, density, is_static);
 }
 
+int PhysicsWorld::prepare_fragment(const Fragment& fragment, double density) {
+  return impl_->add(std::span<const Fragment>(&fragment, 1), density, false, /*in_world=*/false);
+}
+
+int PhysicsWorld::prepare_cluster(std::span<const Fragment> fragments, double density) {
+  return impl_->add(fragments, density, false, /*in_world=*/false);
+}
+
+void PhysicsWorld::insert(int body) {
+  Body& b = const_cast<Body&>(impl_->body(body));
+  require(!b.in_world, "the body is already in the world");
+  impl_->world.addRigidBody(b.rigid.get());
+  b.in_world = true;
+  ++impl_->live;
+}
+
+bool PhysicsWorld::in_world(int body) const { return impl_->body(body).in_world; }
+
+void PhysicsWorld::set_scale(int body, double scale) {
+  require(std::isfinite(scale) && scale > 0.0, "scale must be finite and > 0");
+  Body& b = const_cast<Body&>(impl_->body(body));
+  b.shape->setLocalScaling(btVector3(static_cast<btScalar>(scale), static_cast<btScalar>(scale), static_cast<btScalar>(scale)));
+  if (b.in_world) impl_->world.updateSingleAabb(b.rigid.get());
+}
+
 void PhysicsWorld::remove(int body) {
   impl_->body(body);  // checks the id
-  impl_->world.removeRigidBody(impl_->bodies[body]->rigid.get());
+  if (impl_->bodies[body]->in_world) {
+    impl_->world.removeRigidBody(impl_->bodies[body]->rigid.get());
+    --impl_->live;
+  }
   impl_->bodies[body].reset();
-  --impl_->live;
 }
 
 void PhysicsWorld::apply_impulse(int body, const Vec3& impulse_Ns, const Vec3& world_point) {

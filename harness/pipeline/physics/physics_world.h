@@ -73,7 +73,19 @@ class PhysicsWorld {
   /// Adds `fragments` as one rigid body (a compound of their hulls) with the combined exact mass
   /// properties (parallel-axis theorem about the common centroid). Non-empty. Returns the body id.
   int add_cluster(std::span<const Fragment> fragments, double density, bool is_static = false);
-  /// Removes body `body`; its id becomes invalid and is never reused.
+  /// Makes a dynamic body of `fragment` (as add_fragment) without putting it in the world: the
+  /// collider's cost can be paid before the body takes part (an amortized event). insert() adds it.
+  int prepare_fragment(const Fragment& fragment, double density);
+  /// Makes a dynamic compound of `fragments` (as add_cluster) without putting it in the world.
+  int prepare_cluster(std::span<const Fragment> fragments, double density);
+  /// Puts a prepared body into the world (once).
+  void insert(int body);
+  /// True when `body` (a live id) takes part in the world (not only prepared).
+  [[nodiscard]] bool in_world(int body) const;
+  /// Scales the body's collider uniformly about its centroid by `scale` (> 0; 1 = as made); the mass
+  /// properties stay (a fading piece shrinks visually and in contact, not in inertia).
+  void set_scale(int body, double scale);
+  /// Removes body `body` (in the world or only prepared); its id becomes invalid and is never reused.
   void remove(int body);
 
   /// Applies `impulse_Ns` (N s, world) at `world_point` (m, world) to a dynamic body, waking it.
@@ -95,7 +107,7 @@ class PhysicsWorld {
   [[nodiscard]] Vec3 principal_inertia(int body) const;
   /// True when `body` is a live id.
   [[nodiscard]] bool contains(int body) const;
-  /// Number of live bodies (the ground plane is not counted).
+  /// Number of bodies in the world (prepared ones and the ground plane are not counted).
   [[nodiscard]] int body_count() const;
   /// Number of step() calls so far.
   [[nodiscard]] long step_count() const;
