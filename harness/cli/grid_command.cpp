@@ -130,8 +130,6 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   if (!o.runtime.empty()) cmd += " --runtime " + list(o.runtime);
   if (o.no_skip) cmd += " --no-skip";
   if (o.same_seed) cmd += " --same-seed";
-  if (!o.schedule.empty()) cmd += " --schedule '" + o.schedule + "'";
-  cmd += fmt::format(" --latency-budget-ms {}", o.latency_budget_ms);
   if (o.no_cache) cmd += " --no-cache";
   if (!o.cache_dir.empty()) cmd += " --cache-dir '" + o.cache_dir + "'";
   if (!o.shard.empty()) cmd += " --shard " + o.shard;
