@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <exception>
 #include <iostream>
+#include <string>
 
 int main(int argc, char** argv) {
   using namespace shatter::cli;
@@ -22,6 +23,16 @@ int main(int argc, char** argv) {
   add_accuracy_command(app, exit_code);
   add_report_command(app, exit_code);
   add_stability_command(app, exit_code);
+  if (argc > 1 && argv[1][0] != '-') {
+    // CLI11 would only say that a subcommand is required: name the word and the commands instead.
+    std::string known;
+    bool found = false;
+    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
+      known += (known.empty() ? "" : ", ") + sub->get_name();
+      found = found || sub->get_name() == argv[1];
+    }
+    if (!found) return fail_input(std::string("unknown command \"") + argv[1] + "\" (commands: " + known + ")");
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp&) {

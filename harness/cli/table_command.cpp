@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -55,6 +57,7 @@ int run_table(TableOptions o) {
     for (int n : o.fragments) {
       struct Row {
         std::string algorithm;
+        std::string refused;  // a fracturer's refusal of this input (e.g. self-intersecting): shown, not fatal
         double ms;
         std::size_t count;
         FractureMetrics metrics;
@@ -63,26 +66,39 @@ int run_table(TableOptions o) {
       for (const auto& fracturer : fracturers) {
         std::vector<double> times;
         std::vector<Fragment> first;
-        for (int rep = 0; rep < o.repetitions; ++rep) {
+        std::string refused;
+        for (int rep = 0; rep < o.repetitions && refused.empty(); ++rep) {
           FractureParams params;
           params.fragments = n;
           params.seed = static_cast<std::uint64_t>(rep + 1);
           const auto t0 = std::chrono::steady_clock::now();
           auto fragments = fracturer->fracture(solid.mesh, params);
           const auto t1 = std::chrono::steady_clock::now();
-          if (!fragments) return fail_input(std::string(fracturer->name()) + ": " + fragments.error().message);
+          if (!fragments) {
+            refused = fragments.error().message;
+            break;
+          }
           times.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
           if (rep == 0) first = std::move(*fragments);
         }
-        rows.push_back({std::string(fracturer->name()), median(times), first.size(),
+        if (!refused.empty()) {
+          rows.push_back({std::string(fracturer->name()), refused, 0.0, 0, {}});
+          continue;
+        }
+        rows.push_back({std::string(fracturer->name()), {}, median(times), first.size(),
                         fracture_metrics(solid.mesh, solid.mass, first, n)});
       }
-      double fastest = rows.front().ms;
-      for (const Row& row : rows) fastest = std::min(fastest, row.ms);
+      double fastest = std::numeric_limits<double>::infinity();
       for (const Row& row : rows)
-        fmt::print("| {} | {} | {} | {} | {} | {:.3f} | {:.1f} | {:.2e} | {:.4f} | {:.2e} | {} | {:.3e} |\n",
+        if (row.refused.empty()) fastest = std::min(fastest, row.ms);
+      for (const Row& row : rows)
+        if (!row.refused.empty())
+          fmt::print("| {} | {} | {} | {} | refused: {} | | | | | | | |\n", mesh_name, solid.mesh.triangle_count(),
+                     row.algorithm, n, row.refused);
+        else
+          fmt::print("| {} | {} | {} | {} | {} | {:.3f} | {:.1f} | {:.2e} | {:.4f} | {:.2e} | {} | {:.3e} |\n",
                    mesh_name, solid.mesh.triangle_count(), row.algorithm, n, row.count, row.ms,
-                   fastest > 0 ? row.ms / fastest : 1.0, row.metrics.volume_error, row.metrics.partition_error,
+                   fastest > 0 && std::isfinite(fastest) ? row.ms / fastest : 1.0, row.metrics.volume_error, row.metrics.partition_error,
                    row.metrics.area_error, row.metrics.all_closed ? "yes" : "NO", row.metrics.min_fragment_volume);
     }
   }
