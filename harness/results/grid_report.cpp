@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <functional>
 #include <map>
 
 #include "harness/results/sample_statistics.h"
@@ -177,7 +178,11 @@ std::string grid_to_csv(const GridResult& grid) {
   return out;
 }
 
-std::string grid_to_markdown(const GridResult& grid, const std::string& case_name) {
+namespace {
+
+/// A Markdown table with pre-fracture counts as rows and runtime counts as columns (in the order the
+/// cells come), each cell's text from `text` (" |"-terminated by the caller's format).
+std::string cell_table(const GridResult& grid, const std::function<std::string(const GridCell&)>& text) {
   std::vector<int> rows, cols;
   std::map<std::pair<int, int>, const GridCell*> at;
   for (const GridCell& c : grid.cells) {
@@ -185,15 +190,7 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
     if (std::find(cols.begin(), cols.end(), c.runtime) == cols.end()) cols.push_back(c.runtime);
     at[{c.prefracture, c.runtime}] = &c;
   }
-  std::string out;
-  if (!grid.cells.empty()) {
-    const GridCell& first = grid.cells.front();
-    out += fmt::format("Case `{}`: pre-fracture {}, runtime {}, stress {}; worst frame in ms (median over {} "
-                       "repetitions of each one's slowest of {} frames); budget {} ms; schedule {}\n\n",
-                       case_name, first.prefracturer, first.fracturer, first.stress, grid.repetitions, grid.frames,
-                       grid.budget_ms, first.schedule);
-  }
-  out += "| pre-fracture \\ runtime |";
+  std::string out = "| pre-fracture \\ runtime |";
   for (const int c : cols) out += fmt::format(" {} |", c);
   out += "\n|---:|";
   for (std::size_t i = 0; i < cols.size(); ++i) out += "---:|";
@@ -202,39 +199,36 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
     out += fmt::format("| {} |", r);
     for (const int c : cols) {
       const auto it = at.find({r, c});
-      if (it == at.end()) {
-        out += " |";
-      } else if (it->second->within_budget) {
-        out += fmt::format(" {:.2f} |", it->second->worst_frame_ms);
-      } else {
-        out += fmt::format(" **{:.2f} !** |", it->second->worst_frame_ms);
-      }
+      out += it == at.end() ? std::string(" |") : " " + text(*it->second) + " |";
     }
     out += "\n";
   }
+  return out;
+}
+
+}  // namespace
+
+std::string grid_to_markdown(const GridResult& grid, const std::string& case_name) {
+  std::string out;
+  if (!grid.cells.empty()) {
+    const GridCell& first = grid.cells.front();
+    out += fmt::format("Case `{}`: pre-fracture {}, runtime {}, stress {}; worst frame in ms (median over {} "
+                       "repetitions of each one's slowest of {} frames); budget {} ms; schedule {}\n\n",
+                       case_name, first.prefracturer, first.fracturer, first.stress, grid.repetitions, grid.frames,
+                       grid.budget_ms, first.schedule);
+  }
+  out += cell_table(grid, [](const GridCell& c) {
+    return c.within_budget ? fmt::format("{:.2f}", c.worst_frame_ms) : fmt::format("**{:.2f} !**", c.worst_frame_ms);
+  });
   if (!grid.cells.empty()) {
     out += fmt::format("\nLatency, trigger to visible at 60 Hz: ms (frames), budget {} ms; bodies at the end / peak; "
-                       "particles peak (medians over repetitions)\n\n| pre-fracture \\ runtime |",
+                       "particles peak (medians over repetitions)\n\n",
                        grid.latency_budget_ms);
-    for (const int c : cols) out += fmt::format(" {} |", c);
-    out += "\n|---:|";
-    for (std::size_t i = 0; i < cols.size(); ++i) out += "---:|";
-    out += "\n";
-    for (const int r : rows) {
-      out += fmt::format("| {} |", r);
-      for (const int c : cols) {
-        const auto it = at.find({r, c});
-        if (it == at.end()) {
-          out += " |";
-          continue;
-        }
-        const GridCell& g = *it->second;
-        out += fmt::format(" {}{:.1f} ({:g}){} · {:g}/{:g} · {:g} |", g.within_latency_budget ? "" : "**",
-                           g.latency_ms, g.latency_frames, g.within_latency_budget ? "" : " !**", g.bodies,
-                           g.bodies_peak, g.particles_peak);
-      }
-      out += "\n";
-    }
+    out += cell_table(grid, [](const GridCell& g) {
+      return fmt::format("{}{:.1f} ({:g}){} · {:g}/{:g} · {:g}", g.within_latency_budget ? "" : "**", g.latency_ms,
+                         g.latency_frames, g.within_latency_budget ? "" : " !**", g.bodies, g.bodies_peak,
+                         g.particles_peak);
+    });
   }
   int failed = 0, late = 0;
   for (const GridCell& c : grid.cells) {
@@ -255,36 +249,15 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
 }
 
 std::string grid_instructions_markdown(const GridResult& grid, const std::string& case_name) {
-  std::vector<int> rows, cols;
-  std::map<std::pair<int, int>, const GridCell*> at;
-  for (const GridCell& c : grid.cells) {
-    if (std::find(rows.begin(), rows.end(), c.prefracture) == rows.end()) rows.push_back(c.prefracture);
-    if (std::find(cols.begin(), cols.end(), c.runtime) == cols.end()) cols.push_back(c.runtime);
-    at[{c.prefracture, c.runtime}] = &c;
-  }
-  const auto median_of_field = [](const GridCell& c, double InstructionCounts::*field) {
-    std::vector<double> v;
-    for (const GridSample& s : c.samples)
-      if (s.instructions) v.push_back((*s.instructions).*field);
-    return median_of(v);
-  };
   std::string out = fmt::format("Case `{}`: retired instructions of the largest frame, millions (median over {} "
                                 "repetitions of {} frames; counted under callgrind)\n\n",
                                 case_name, grid.repetitions, grid.frames);
-  out += "| pre-fracture \\ runtime |";
-  for (const int c : cols) out += fmt::format(" {} |", c);
-  out += "\n|---:|";
-  for (std::size_t i = 0; i < cols.size(); ++i) out += "---:|";
-  out += "\n";
-  for (const int r : rows) {
-    out += fmt::format("| {} |", r);
-    for (const int c : cols) {
-      const auto it = at.find({r, c});
-      out += it == at.end() ? std::string(" |")
-                            : fmt::format(" {:.3f} |", median_of_field(*it->second, &InstructionCounts::worst_frame) / 1e6);
-    }
-    out += "\n";
-  }
+  out += cell_table(grid, [](const GridCell& c) {
+    std::vector<double> v;
+    for (const GridSample& s : c.samples)
+      if (s.instructions) v.push_back(s.instructions->worst_frame);
+    return fmt::format("{:.3f}", median_of(v) / 1e6);
+  });
   return out;
 }
 

@@ -1,4 +1,5 @@
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
+#include "algorithms/core/axis_projection.h"
 
 #include "algorithms/core/predicates.h"
 
@@ -12,23 +13,6 @@ namespace {
 std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
-
-/// The axis-aligned projection in which the plane's normal points towards the viewer: counter-
-/// clockwise in 2D is counter-clockwise seen from the positive side. Exact (it only drops and
-/// reorders coordinates).
-struct Projection {
-  int u = 0;
-  int v = 1;
-  explicit Projection(const Vec3& normal) {
-    int k = 0;
-    if (std::abs(normal.y()) > std::abs(normal[k])) k = 1;
-    if (std::abs(normal.z()) > std::abs(normal[k])) k = 2;
-    u = (k + 1) % 3;
-    v = (k + 2) % 3;
-    if (normal[k] < 0) std::swap(u, v);
-  }
-  [[nodiscard]] Vec2 operator()(const Vec3& p) const { return {p[u], p[v]}; }
-};
 
 }  // namespace
 
@@ -125,7 +109,7 @@ void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
   if (positive == 0 && negative > 0) return emit(below_side, t[0], t[1], t[2], tag);
   if (positive == 0 && negative == 0) {
     // In the plane: the face bounds the side its normal points away from.
-    const Projection proj(plane_.normal);
+    const AxisProjection proj(plane_.normal);
     const Vec3* p[3] = {&mesh_->vertices[static_cast<std::size_t>(t[0])],
                         &mesh_->vertices[static_cast<std::size_t>(t[1])],
                         &mesh_->vertices[static_cast<std::size_t>(t[2])]};
@@ -183,7 +167,7 @@ bool MeshSlicer::cap_closes_outline(const std::vector<Triangle>& triangles) {
 }
 
 bool MeshSlicer::add_cap() {
-  const Projection proj(plane_.normal);
+  const AxisProjection proj(plane_.normal);
   cap_ref_.clear();
   cap_points_.clear();
   cap_edges_.clear();

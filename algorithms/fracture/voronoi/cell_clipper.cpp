@@ -1,4 +1,5 @@
 #include "algorithms/fracture/voronoi/cell_clipper.h"
+#include "algorithms/core/axis_projection.h"
 
 #include "algorithms/core/predicates.h"
 
@@ -17,21 +18,6 @@ std::uint64_t pair_key(std::int32_t a, std::int32_t b) {
 bool overlaps(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
 }
-
-/// The axis-aligned projection in which `normal` points towards the viewer (as in MeshSlicer).
-struct Projection {
-  int u = 0;
-  int v = 1;
-  explicit Projection(const Vec3& normal) {
-    int k = 0;
-    if (std::abs(normal.y()) > std::abs(normal[k])) k = 1;
-    if (std::abs(normal.z()) > std::abs(normal[k])) k = 2;
-    u = (k + 1) % 3;
-    v = (k + 2) % 3;
-    if (normal[k] < 0) std::swap(u, v);
-  }
-  [[nodiscard]] Vec2 operator()(const Vec3& p) const { return {p[u], p[v]}; }
-};
 
 }  // namespace
 
@@ -434,7 +420,7 @@ bool CellClipper::triangulate_caps() {
   std::unordered_map<std::uint64_t, int> halfedges;
   for (std::size_t plane = 0; plane < cap_edges_.size(); ++plane) {
     if (cap_edges_[plane].empty()) continue;
-    const Projection proj(planes_[plane].normal);
+    const AxisProjection proj(planes_[plane].normal);
     point_of_ref.clear();
     refs.clear();
     points.clear();
