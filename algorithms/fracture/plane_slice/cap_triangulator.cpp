@@ -356,12 +356,18 @@ bool Workspace::restore_delaunay(std::string& error) {
 }
 
 /// Sloan's bin order: rows of bins, alternate rows right to left, so consecutive points are close.
-void sort_by_bins(Workspace& ws, Id n, const Vec2& lo, double inv_size) {
+void sort_by_bins(Workspace& ws, Id n, const Vec2& lo, double size) {
   const Id side = std::max<Id>(1, static_cast<Id>(std::sqrt(n) / 2));
   ws.keys.clear();
   for (Id i = 0; i < n; ++i) {
-    const Vec2 q = (ws.p(i) - lo) * inv_size;  // in [0, 1]^2; ordering only
-    const auto bin = [&](double x) { return std::min<Id>(side - 1, static_cast<Id>(x * side)); };
+    // In [0, 1]^2 up to rounding; ordering only. Divided, not multiplied by 1 / size: a cap a few
+    // subnormals wide has 1 / size = inf. The bin is clamped in double before the conversion, so no
+    // rounding (or a non-finite value) can reach an out-of-range integer conversion.
+    const Vec2 q = (ws.p(i) - lo) / size;
+    const auto bin = [&](double x) {
+      const double b = x * static_cast<double>(side);
+      return b >= 0.0 ? static_cast<Id>(std::min(b, static_cast<double>(side - 1))) : Id{0};
+    };
     const Id row = bin(q.y());
     const Id col = row % 2 == 0 ? bin(q.x()) : side - 1 - bin(q.x());
     ws.keys.emplace_back(static_cast<std::int64_t>(row) * side + col, i);
@@ -430,7 +436,7 @@ CapTriangulation triangulate_cap(std::span<const Vec2> points, std::span<const C
   ws.set(root, n, n + 1, n + 2);
   for (int i = 0; i < 3; ++i) ws.link(root, i, -1, 0);
 
-  sort_by_bins(ws, n, lo, 1.0 / size);
+  sort_by_bins(ws, n, lo, size);
   Id hint = root;
   for (const auto& key : ws.keys) ws.insert(key.second, hint);
 
