@@ -3,6 +3,7 @@
 #include "algorithms/core/predicates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace shatter {
@@ -17,37 +18,46 @@ PointInMesh::PointInMesh(const Mesh& mesh) : mesh_(&mesh), bounds_(bounding_box(
   ny_ = std::clamp(static_cast<int>(wy / side), 1, 2048);
   cell_x_ = wx / nx_;
   cell_y_ = wy / ny_;
+  inverse_x_ = 1.0 / cell_x_;
+  inverse_y_ = 1.0 / cell_y_;
+  // Two passes (count, fill) over each triangle's column range, found once.
+  const std::size_t n = mesh.triangles.size();
+  std::vector<std::array<int, 4>> ranges(n);  // x from, y from, x to, y to
   column_start_.assign(static_cast<std::size_t>(nx_) * ny_ + 1, 0);
-  // Two passes (count, fill) over each triangle's column range.
-  for (int pass = 0; pass < 2; ++pass) {
-    std::vector<std::int32_t> fill;
-    if (pass == 1) {
-      for (std::size_t c = 1; c < column_start_.size(); ++c) column_start_[c] += column_start_[c - 1];
-      column_triangles_.resize(static_cast<std::size_t>(column_start_.back()));
-      fill.assign(column_start_.begin(), column_start_.end() - 1);
-    }
-    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-      const Triangle& t = mesh.triangles[f];
-      const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
-      const Vec3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
-      const Vec3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
-      const int c0 = column(std::min({a.x(), b.x(), c.x()}), std::min({a.y(), b.y(), c.y()}));
-      const int c1 = column(std::max({a.x(), b.x(), c.x()}), std::max({a.y(), b.y(), c.y()}));
-      for (int iy = c0 / nx_; iy <= c1 / nx_; ++iy)
-        for (int ix = c0 % nx_; ix <= c1 % nx_; ++ix) {
-          const std::size_t col = static_cast<std::size_t>(iy) * nx_ + ix;
-          if (pass == 0) ++column_start_[col + 1];
-          else column_triangles_[static_cast<std::size_t>(fill[col]++)] = static_cast<std::int32_t>(f);
-        }
-    }
+  for (std::size_t f = 0; f < n; ++f) {
+    const Triangle& t = mesh.triangles[f];
+    const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+    const Vec3& b = mesh.vertices[static_cast<std::size_t>(t[1])];
+    const Vec3& c = mesh.vertices[static_cast<std::size_t>(t[2])];
+    std::array<int, 4>& r = ranges[f];
+    r = {column_x(std::min({a.x(), b.x(), c.x()})), column_y(std::min({a.y(), b.y(), c.y()})),
+         column_x(std::max({a.x(), b.x(), c.x()})), column_y(std::max({a.y(), b.y(), c.y()}))};
+    for (int iy = r[1]; iy <= r[3]; ++iy)
+      for (int ix = r[0]; ix <= r[2]; ++ix) ++column_start_[static_cast<std::size_t>(iy) * nx_ + ix + 1];
+  }
+  for (std::size_t c = 1; c < column_start_.size(); ++c) column_start_[c] += column_start_[c - 1];
+  column_triangles_.resize(static_cast<std::size_t>(column_start_.back()));
+  std::vector<std::int32_t> fill(column_start_.begin(), column_start_.end() - 1);
+  for (std::size_t f = 0; f < n; ++f) {
+    const std::array<int, 4>& r = ranges[f];
+    for (int iy = r[1]; iy <= r[3]; ++iy)
+      for (int ix = r[0]; ix <= r[2]; ++ix)
+        column_triangles_[static_cast<std::size_t>(fill[static_cast<std::size_t>(iy) * nx_ + ix]++)] =
+            static_cast<std::int32_t>(f);
   }
 }
 
-int PointInMesh::column(double x, double y) const {
-  const int ix = std::clamp(static_cast<int>((x - bounds_.min.x()) / cell_x_), 0, nx_ - 1);
-  const int iy = std::clamp(static_cast<int>((y - bounds_.min.y()) / cell_y_), 0, ny_ - 1);
-  return iy * nx_ + ix;
+// Binning and queries use these same two functions, which are monotone in x and y, so a point inside
+// a triangle's xy box always falls in one of the triangle's columns.
+int PointInMesh::column_x(double x) const {
+  return std::clamp(static_cast<int>((x - bounds_.min.x()) * inverse_x_), 0, nx_ - 1);
 }
+
+int PointInMesh::column_y(double y) const {
+  return std::clamp(static_cast<int>((y - bounds_.min.y()) * inverse_y_), 0, ny_ - 1);
+}
+
+int PointInMesh::column(double x, double y) const { return column_y(y) * nx_ + column_x(x); }
 
 InsideAnswer PointInMesh::operator()(const Vec3& q) const {
   if (!bounds_.contains(q)) return InsideAnswer::outside;

@@ -37,10 +37,13 @@ class PointInMesh {
 
  private:
   [[nodiscard]] int column(double x, double y) const;
+  [[nodiscard]] int column_x(double x) const;
+  [[nodiscard]] int column_y(double y) const;
   const Mesh* mesh_;
   Aabb bounds_;
   int nx_ = 1, ny_ = 1;
   double cell_x_ = 1.0, cell_y_ = 1.0;           // m per column
+  double inverse_x_ = 1.0, inverse_y_ = 1.0;     // columns per m
   std::vector<std::int32_t> column_start_;       // CSR offsets, nx * ny + 1
   std::vector<std::int32_t> column_triangles_;   // triangle indices per column
 };
