@@ -1,19 +1,13 @@
-// Google Benchmark: the fracture kernels side by side (plane-slice and its
-// exact reference cgal-clip) on real meshes of about 1k, 10k and 100k
-// triangles: one plane slice, and recursive fracture into 5, 25 and 100
-// fragments. Error figures ride along as counters, so every time has its
-// accuracy next to it.
+// Google Benchmark: the fracture kernels side by side (plane-slice and its exact reference cgal-clip)
+// on real meshes of about 1k, 10k and 100k triangles: one plane slice, and recursive fracture into 5,
+// 25 and 100 fragments. Error figures ride along as counters, so every time has its accuracy next to it.
 //
-//   build/bin/shatter_benchmarks [--benchmark_filter=...]
-//   [--benchmark_repetitions=5]
-// Families: slice/ and fracture/ (plane-slice vs cgal-clip), voronoi/ (voronoi
-// vs its exact cell replay; `voronoi` breaks a solid it has seen before,
-// `voronoi-first` one it has not, so it pays the input check of
-// self_intersection.h every time, as the replay does), self-intersection/ (that
-// check alone).
+//   build/bin/shatter_benchmarks [--benchmark_filter=...] [--benchmark_repetitions=5]
+// Families: slice/ and fracture/ (plane-slice vs cgal-clip), voronoi/ (voronoi vs its exact cell replay;
+// `voronoi` breaks a solid it has seen before, `voronoi-first` one it has not, so it pays the input check
+// of self_intersection.h every time, as the replay does), self-intersection/ (that check alone).
 //
-// Meshes come from $SHATTER_MESH_DIR or <source>/data/meshes
-// (scripts/fetch-meshes).
+// Meshes come from $SHATTER_MESH_DIR or <source>/data/meshes (scripts/fetch-meshes).
 
 #include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
@@ -38,41 +32,35 @@ using namespace shatter;
 namespace {
 
 std::filesystem::path mesh_dir() {
-  if (const char *env = std::getenv("SHATTER_MESH_DIR"))
-    return env;
+  if (const char* env = std::getenv("SHATTER_MESH_DIR")) return env;
   return std::filesystem::path(SHATTER_SOURCE_DIR) / "data" / "meshes";
 }
 
 /// The meshes of the size ladder: about 1k, 5k, 10k, 50k and 100k triangles.
-const std::vector<std::string> &ladder() {
-  static const std::vector<std::string> names = {
-      "sphere966.off", "elephant.off", "homer.off", "armadillo.off",
-      "refined_elephant.off"};
+const std::vector<std::string>& ladder() {
+  static const std::vector<std::string> names = {"sphere966.off", "elephant.off", "homer.off", "armadillo.off",
+                                                 "refined_elephant.off"};
   return names;
 }
 
 /// The exact self-intersection test voronoi and fem-lite run on every input.
-void self_intersection(benchmark::State &state, const Solid &solid) {
+void self_intersection(benchmark::State& state, const Solid& solid) {
   bool found = false;
   for (auto _ : state) {
     found = find_self_intersection(solid.mesh).has_value();
     benchmark::DoNotOptimize(found);
   }
-  state.counters["triangles"] =
-      static_cast<double>(solid.mesh.triangle_count());
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
   state.counters["intersects"] = found ? 1.0 : 0.0;
 }
 
-void slice_once(benchmark::State &state, const Solid &solid,
-                const std::string &algorithm) {
+void slice_once(benchmark::State& state, const Solid& solid, const std::string& algorithm) {
   const Plane plane{solid.mass.centroid, Vec3(0.3, 0.5, 0.8).normalized()};
   const std::span<const Plane> planes(&plane, 1);
   std::vector<Fragment> fragments;
   for (auto _ : state) {
-    auto out =
-        algorithm == "cgal-clip"
-            ? CgalClipFracturer().fracture_by_planes(solid.mesh, planes)
-            : PlaneSliceFracturer().fracture_by_planes(solid.mesh, planes);
+    auto out = algorithm == "cgal-clip" ? CgalClipFracturer().fracture_by_planes(solid.mesh, planes)
+                                        : PlaneSliceFracturer().fracture_by_planes(solid.mesh, planes);
     if (!out) {
       state.SkipWithError(out.error().message.c_str());
       return;
@@ -80,22 +68,18 @@ void slice_once(benchmark::State &state, const Solid &solid,
     fragments = std::move(*out);
     benchmark::DoNotOptimize(fragments.data());
   }
-  const FractureMetrics m =
-      fracture_metrics(solid.mesh, solid.mass, fragments, 2);
-  state.counters["triangles"] =
-      static_cast<double>(solid.mesh.triangle_count());
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, 2);
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
   state.counters["fragments"] = static_cast<double>(fragments.size());
   state.counters["volume_error"] = m.volume_error;
   state.counters["partition_error"] = m.partition_error;
 }
 
-/// Input checks on a solid seen before are remembered (self_intersection.h):
-/// `first` forgets them before every fracture, so that each iteration is the
-/// solid's first fracture.
+/// Input checks on a solid seen before are remembered (self_intersection.h): `first` forgets them before
+/// every fracture, so that each iteration is the solid's first fracture.
 enum class Visit { again, first };
 
-void fracture_into(benchmark::State &state, const Solid &solid,
-                   const std::string &algorithm, int n,
+void fracture_into(benchmark::State& state, const Solid& solid, const std::string& algorithm, int n,
                    Visit visit = Visit::again) {
   auto fracturer = registries().fracturers.create(algorithm);
   FractureParams params;
@@ -103,8 +87,7 @@ void fracture_into(benchmark::State &state, const Solid &solid,
   params.seed = 1;
   std::vector<Fragment> fragments;
   for (auto _ : state) {
-    if (visit == Visit::first)
-      forget_self_intersection_verdicts();
+    if (visit == Visit::first) forget_self_intersection_verdicts();
     auto out = (*fracturer)->fracture(solid.mesh, params);
     if (!out) {
       state.SkipWithError(out.error().message.c_str());
@@ -113,18 +96,15 @@ void fracture_into(benchmark::State &state, const Solid &solid,
     fragments = std::move(*out);
     benchmark::DoNotOptimize(fragments.data());
   }
-  const FractureMetrics m =
-      fracture_metrics(solid.mesh, solid.mass, fragments, n);
-  state.counters["triangles"] =
-      static_cast<double>(solid.mesh.triangle_count());
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, n);
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
   state.counters["fragments"] = static_cast<double>(fragments.size());
   state.counters["volume_error"] = m.volume_error;
   state.counters["partition_error"] = m.partition_error;
 }
 
-/// voronoi's cells replayed exactly: the same sites and bisector planes,
-/// corefined by CGAL.
-void voronoi_replay(benchmark::State &state, const Solid &solid, int n) {
+/// voronoi's cells replayed exactly: the same sites and bisector planes, corefined by CGAL.
+void voronoi_replay(benchmark::State& state, const Solid& solid, int n) {
   FractureParams params;
   params.fragments = n;
   params.seed = 1;
@@ -138,9 +118,7 @@ void voronoi_replay(benchmark::State &state, const Solid &solid, int n) {
     std::vector<ConvexCell> cells(sites->size());
     for (int i = 0; i < static_cast<int>(sites->size()); ++i)
       for (int j = 0; j < static_cast<int>(sites->size()); ++j)
-        if (i != j)
-          cells[static_cast<std::size_t>(i)].planes.push_back(
-              bisector_plane(*sites, i, j));
+        if (i != j) cells[static_cast<std::size_t>(i)].planes.push_back(bisector_plane(*sites, i, j));
     auto out = CgalClipFracturer().fracture_by_cells(solid.mesh, cells);
     if (!out) {
       state.SkipWithError(out.error().message.c_str());
@@ -148,75 +126,61 @@ void voronoi_replay(benchmark::State &state, const Solid &solid, int n) {
     }
     fragments = std::move(*out);
   }
-  const FractureMetrics m =
-      fracture_metrics(solid.mesh, solid.mass, fragments, n);
-  state.counters["triangles"] =
-      static_cast<double>(solid.mesh.triangle_count());
+  const FractureMetrics m = fracture_metrics(solid.mesh, solid.mass, fragments, n);
+  state.counters["triangles"] = static_cast<double>(solid.mesh.triangle_count());
   state.counters["fragments"] = static_cast<double>(fragments.size());
   state.counters["volume_error"] = m.volume_error;
   state.counters["partition_error"] = m.partition_error;
 }
 
-} // namespace
+}  // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   static std::vector<std::pair<std::string, Solid>> solids;
-  for (const std::string &name : ladder()) {
+  for (const std::string& name : ladder()) {
     Result<Solid> solid = load_solid(mesh_dir() / name);
     if (!solid) {
-      std::cerr << "shatter_benchmarks: skipping " << name << ": "
-                << solid.error().message << "\n";
+      std::cerr << "shatter_benchmarks: skipping " << name << ": " << solid.error().message << "\n";
       continue;
     }
     solids.emplace_back(name, std::move(*solid));
   }
-  for (const auto &[name, solid] : solids) {
-    for (const char *algorithm : {"plane-slice", "cgal-clip"}) {
-      const Solid *s = &solid;
+  for (const auto& [name, solid] : solids) {
+    for (const char* algorithm : {"plane-slice", "cgal-clip"}) {
+      const Solid* s = &solid;
       const std::string algo = algorithm;
-      benchmark::RegisterBenchmark(
-          ("slice/" + name + "/" + algo).c_str(),
-          [s, algo](benchmark::State &st) { slice_once(st, *s, algo); })
+      benchmark::RegisterBenchmark(("slice/" + name + "/" + algo).c_str(),
+                                   [s, algo](benchmark::State& st) { slice_once(st, *s, algo); })
           ->Unit(benchmark::kMillisecond);
       for (int n : {5, 25, 100}) {
-        benchmark::RegisterBenchmark(
-            ("fracture/" + name + "/" + algo + "/" + std::to_string(n)).c_str(),
-            [s, algo, n](benchmark::State &st) {
-              fracture_into(st, *s, algo, n);
-            })
+        benchmark::RegisterBenchmark(("fracture/" + name + "/" + algo + "/" + std::to_string(n)).c_str(),
+                                     [s, algo, n](benchmark::State& st) { fracture_into(st, *s, algo, n); })
             ->Unit(benchmark::kMillisecond);
       }
     }
   }
-  for (const auto &[name, solid] : solids) {
-    const Solid *s = &solid;
+  for (const auto& [name, solid] : solids) {
+    const Solid* s = &solid;
     for (int n : {5, 25, 100}) {
-      benchmark::RegisterBenchmark(
-          ("voronoi/" + name + "/voronoi/" + std::to_string(n)).c_str(),
-          [s, n](benchmark::State &st) { fracture_into(st, *s, "voronoi", n); })
+      benchmark::RegisterBenchmark(("voronoi/" + name + "/voronoi/" + std::to_string(n)).c_str(),
+                                   [s, n](benchmark::State& st) { fracture_into(st, *s, "voronoi", n); })
           ->Unit(benchmark::kMillisecond);
-      benchmark::RegisterBenchmark(
-          ("voronoi/" + name + "/voronoi-first/" + std::to_string(n)).c_str(),
-          [s, n](benchmark::State &st) {
-            fracture_into(st, *s, "voronoi", n, Visit::first);
-          })
+      benchmark::RegisterBenchmark(("voronoi/" + name + "/voronoi-first/" + std::to_string(n)).c_str(),
+                                   [s, n](benchmark::State& st) { fracture_into(st, *s, "voronoi", n, Visit::first); })
           ->Unit(benchmark::kMillisecond);
-      benchmark::RegisterBenchmark(
-          ("voronoi/" + name + "/cgal-replay/" + std::to_string(n)).c_str(),
-          [s, n](benchmark::State &st) { voronoi_replay(st, *s, n); })
+      benchmark::RegisterBenchmark(("voronoi/" + name + "/cgal-replay/" + std::to_string(n)).c_str(),
+                                   [s, n](benchmark::State& st) { voronoi_replay(st, *s, n); })
           ->Unit(benchmark::kMillisecond);
     }
   }
-  for (const auto &[name, solid] : solids) {
-    const Solid *s = &solid;
-    benchmark::RegisterBenchmark(
-        ("self-intersection/" + name).c_str(),
-        [s](benchmark::State &st) { self_intersection(st, *s); })
+  for (const auto& [name, solid] : solids) {
+    const Solid* s = &solid;
+    benchmark::RegisterBenchmark(("self-intersection/" + name).c_str(),
+                                 [s](benchmark::State& st) { self_intersection(st, *s); })
         ->Unit(benchmark::kMillisecond);
   }
   benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv))
-    return 2;
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -16,76 +16,62 @@ namespace {
 
 using Corners = std::array<Vec3, 3>;
 
-/// Drops coordinate `axis`: a projection of a plane that keeps the orientation
-/// of every triple of points of that plane consistent, when the plane is not
-/// parallel to the axis.
-Vec2 drop(const Vec3 &p, int axis) {
-  return {p[(axis + 1) % 3], p[(axis + 2) % 3]};
-}
+/// Drops coordinate `axis`: a projection of a plane that keeps the orientation of every triple of
+/// points of that plane consistent, when the plane is not parallel to the axis.
+Vec2 drop(const Vec3& p, int axis) { return {p[(axis + 1) % 3], p[(axis + 2) % 3]}; }
 
-/// An axis along which triangle t does not project to a segment (it is not
-/// degenerate), or -1.
-int projection_axis(const Corners &t) {
+/// An axis along which triangle t does not project to a segment (it is not degenerate), or -1.
+int projection_axis(const Corners& t) {
   for (int axis = 2; axis >= 0; --axis)
-    if (orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)) != 0)
-      return axis;
+    if (orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)) != 0) return axis;
   return -1;
 }
 
 /// Closed segments pq and rs of one plane (2D) have a point in common.
-bool segments_meet(const Vec2 &p, const Vec2 &q, const Vec2 &r, const Vec2 &s) {
+bool segments_meet(const Vec2& p, const Vec2& q, const Vec2& r, const Vec2& s) {
   const int o1 = orient2d(p, q, r);
   const int o2 = orient2d(p, q, s);
   const int o3 = orient2d(r, s, p);
   const int o4 = orient2d(r, s, q);
-  if (o1 * o2 < 0 && o3 * o4 < 0)
-    return true;
-  const auto on = [](const Vec2 &a, const Vec2 &b,
-                     const Vec2 &x) { // x collinear with ab: within it?
-    return std::min(a.x(), b.x()) <= x.x() && x.x() <= std::max(a.x(), b.x()) &&
-           std::min(a.y(), b.y()) <= x.y() && x.y() <= std::max(a.y(), b.y());
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  const auto on = [](const Vec2& a, const Vec2& b, const Vec2& x) {  // x collinear with ab: within it?
+    return std::min(a.x(), b.x()) <= x.x() && x.x() <= std::max(a.x(), b.x()) && std::min(a.y(), b.y()) <= x.y() &&
+           x.y() <= std::max(a.y(), b.y());
   };
-  return (o1 == 0 && on(p, q, r)) || (o2 == 0 && on(p, q, s)) ||
-         (o3 == 0 && on(r, s, p)) || (o4 == 0 && on(r, s, q));
+  return (o1 == 0 && on(p, q, r)) || (o2 == 0 && on(p, q, s)) || (o3 == 0 && on(r, s, p)) || (o4 == 0 && on(r, s, q));
 }
 
-/// Point x lies in the closed triangle abc (2D, any orientation, not
-/// degenerate).
-bool in_triangle(const Vec2 &a, const Vec2 &b, const Vec2 &c, const Vec2 &x) {
+/// Point x lies in the closed triangle abc (2D, any orientation, not degenerate).
+bool in_triangle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& x) {
   const int s0 = orient2d(a, b, x);
   const int s1 = orient2d(b, c, x);
   const int s2 = orient2d(c, a, x);
   return (s0 >= 0 && s1 >= 0 && s2 >= 0) || (s0 <= 0 && s1 <= 0 && s2 <= 0);
 }
 
-/// Closed triangles of one plane meet (t not degenerate in the projection along
-/// `axis`).
-bool coplanar_triangles_meet(const Corners &t, const Corners &u, int axis) {
+/// Closed triangles of one plane meet (t not degenerate in the projection along `axis`).
+bool coplanar_triangles_meet(const Corners& t, const Corners& u, int axis) {
   std::array<Vec2, 3> a;
   std::array<Vec2, 3> b;
-  for (int k = 0; k < 3; ++k)
-    a[k] = drop(t[k], axis), b[k] = drop(u[k], axis);
+  for (int k = 0; k < 3; ++k) a[k] = drop(t[k], axis), b[k] = drop(u[k], axis);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
-      if (segments_meet(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]))
-        return true;
-  if (in_triangle(a[0], a[1], a[2], b[0]))
-    return true;
+      if (segments_meet(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3])) return true;
+  if (in_triangle(a[0], a[1], a[2], b[0])) return true;
   return orient2d(b[0], b[1], b[2]) != 0 && in_triangle(b[0], b[1], b[2], a[0]);
 }
 
 /// Closed segment pq meets closed triangle abc (3D, not degenerate).
-bool segment_meets_triangle(const Vec3 &p, const Vec3 &q, const Corners &t) {
+bool segment_meets_triangle(const Vec3& p, const Vec3& q, const Corners& t) {
   const int sp = orient3d(t[0], t[1], t[2], p);
   const int sq = orient3d(t[0], t[1], t[2], q);
-  if (sp * sq > 0)
-    return false;
-  if (sp == 0 && sq == 0) { // the segment lies in the triangle's plane
+  if (sp * sq > 0) return false;
+  if (sp == 0 && sq == 0) {  // the segment lies in the triangle's plane
     const int axis = projection_axis(t);
     const Vec2 a = drop(t[0], axis), b = drop(t[1], axis), c = drop(t[2], axis);
     const Vec2 p2 = drop(p, axis), q2 = drop(q, axis);
-    return in_triangle(a, b, c, p2) || segments_meet(a, b, p2, q2) ||
-           segments_meet(b, c, p2, q2) || segments_meet(c, a, p2, q2);
+    return in_triangle(a, b, c, p2) || segments_meet(a, b, p2, q2) || segments_meet(b, c, p2, q2) ||
+           segments_meet(c, a, p2, q2);
   }
   const int s1 = orient3d(p, q, t[0], t[1]);
   const int s2 = orient3d(p, q, t[1], t[2]);
@@ -93,57 +79,42 @@ bool segment_meets_triangle(const Vec3 &p, const Vec3 &q, const Corners &t) {
   return (s1 >= 0 && s2 >= 0 && s3 >= 0) || (s1 <= 0 && s2 <= 0 && s3 <= 0);
 }
 
-/// The direction from a to x is the direction from a to b (x on the line ab),
-/// compared coordinate by coordinate (the sign of a difference of doubles is
-/// exact).
-bool same_ray(const Vec2 &a, const Vec2 &b, const Vec2 &x) {
+/// The direction from a to x is the direction from a to b (x on the line ab), compared coordinate by
+/// coordinate (the sign of a difference of doubles is exact).
+bool same_ray(const Vec2& a, const Vec2& b, const Vec2& x) {
   for (int k = 0; k < 2; ++k) {
-    const bool bp = b[k] > a[k], bn = b[k]<a[k], xp = x[k]> a[k],
-               xn = x[k] < a[k];
-    if (bp != xp || bn != xn)
-      return false;
+    const bool bp = b[k] > a[k], bn = b[k] < a[k], xp = x[k] > a[k], xn = x[k] < a[k];
+    if (bp != xp || bn != xn) return false;
   }
   return true;
 }
 
-/// Two coplanar triangles (a, b, c) and (a, e, f) with only corner a in common
-/// meet elsewhere: each lies in its angle at a, so they do exactly when the
-/// open angles overlap or share a ray.
-bool coplanar_fans_meet(const Vec3 &a3, Vec3 b3, Vec3 c3, Vec3 e3, Vec3 f3,
-                        int axis) {
+/// Two coplanar triangles (a, b, c) and (a, e, f) with only corner a in common meet elsewhere: each
+/// lies in its angle at a, so they do exactly when the open angles overlap or share a ray.
+bool coplanar_fans_meet(const Vec3& a3, Vec3 b3, Vec3 c3, Vec3 e3, Vec3 f3, int axis) {
   const Vec2 a = drop(a3, axis);
-  Vec2 b = drop(b3, axis), c = drop(c3, axis), e = drop(e3, axis),
-       f = drop(f3, axis);
-  if (orient2d(a, b, c) < 0)
-    std::swap(b, c);
+  Vec2 b = drop(b3, axis), c = drop(c3, axis), e = drop(e3, axis), f = drop(f3, axis);
+  if (orient2d(a, b, c) < 0) std::swap(b, c);
   const int ef = orient2d(a, e, f);
-  if (ef == 0)
-    return false; // u is degenerate: no area to overlap
-  if (ef < 0)
-    std::swap(e, f);
-  const auto strictly_in = [&](const Vec2 &from, const Vec2 &to,
-                               const Vec2 &x) {
+  if (ef == 0) return false;  // u is degenerate: no area to overlap
+  if (ef < 0) std::swap(e, f);
+  const auto strictly_in = [&](const Vec2& from, const Vec2& to, const Vec2& x) {
     return orient2d(a, from, x) > 0 && orient2d(a, x, to) > 0;
   };
-  const auto on_ray = [&](const Vec2 &r, const Vec2 &x) {
-    return orient2d(a, r, x) == 0 && same_ray(a, r, x);
-  };
-  if (strictly_in(b, c, e) || strictly_in(b, c, f) || strictly_in(e, f, b) ||
-      strictly_in(e, f, c))
-    return true;
+  const auto on_ray = [&](const Vec2& r, const Vec2& x) { return orient2d(a, r, x) == 0 && same_ray(a, r, x); };
+  if (strictly_in(b, c, e) || strictly_in(b, c, f) || strictly_in(e, f, b) || strictly_in(e, f, c)) return true;
   return on_ray(b, e) || on_ray(b, f) || on_ray(c, e) || on_ray(c, f);
 }
 
 /// Both non-zero and of one sign.
 bool one_side(int x, int y) { return x * y > 0; }
 
-} // namespace
+}  // namespace
 
-bool triangles_intersect(const Corners &t, const Corners &u) {
+bool triangles_intersect(const Corners& t, const Corners& u) {
   // Common corners, by position.
   int shared = 0;
-  std::array<int, 3> t_of_u{-1, -1,
-                            -1}; // corner of t at each corner of u, -1 if none
+  std::array<int, 3> t_of_u{-1, -1, -1};  // corner of t at each corner of u, -1 if none
   for (int j = 0; j < 3; ++j)
     for (int i = 0; i < 3; ++i)
       if (t[i] == u[j]) {
@@ -151,100 +122,76 @@ bool triangles_intersect(const Corners &t, const Corners &u) {
         ++shared;
         break;
       }
-  if (shared >= 3)
-    return true;
-  // A degenerate triangle has no area to meet anything with: left to mesh
-  // validation.
+  if (shared >= 3) return true;
+  // A degenerate triangle has no area to meet anything with: left to mesh validation.
   if (shared == 2) {
     const int t_axis = projection_axis(t);
-    if (t_axis < 0)
-      return false;
-    // A common edge: they meet elsewhere only folded onto each other, u's free
-    // corner on t's side.
+    if (t_axis < 0) return false;
+    // A common edge: they meet elsewhere only folded onto each other, u's free corner on t's side.
     const int j = t_of_u[0] < 0 ? 0 : (t_of_u[1] < 0 ? 1 : 2);
     const int i = 3 - t_of_u[(j + 1) % 3] - t_of_u[(j + 2) % 3];
-    if (orient3d(t[0], t[1], t[2], u[j]) != 0)
-      return false;
-    const Vec3 &p = t[(i + 1) % 3];
-    const Vec3 &q = t[(i + 2) % 3];
-    return one_side(
-        orient2d(drop(p, t_axis), drop(q, t_axis), drop(t[i], t_axis)),
-        orient2d(drop(p, t_axis), drop(q, t_axis), drop(u[j], t_axis)));
+    if (orient3d(t[0], t[1], t[2], u[j]) != 0) return false;
+    const Vec3& p = t[(i + 1) % 3];
+    const Vec3& q = t[(i + 2) % 3];
+    return one_side(orient2d(drop(p, t_axis), drop(q, t_axis), drop(t[i], t_axis)),
+                    orient2d(drop(p, t_axis), drop(q, t_axis), drop(u[j], t_axis)));
   }
-  // Sides of u's corners against t's plane; a common corner is on it (and would
-  // cost the exact fallback of orient3d, which the filter cannot settle at 0).
+  // Sides of u's corners against t's plane; a common corner is on it (and would cost the exact
+  // fallback of orient3d, which the filter cannot settle at 0).
   std::array<int, 3> su{0, 0, 0};
   for (int k = 0; k < 3; ++k)
-    if (t_of_u[k] < 0)
-      su[k] = orient3d(t[0], t[1], t[2], u[k]);
+    if (t_of_u[k] < 0) su[k] = orient3d(t[0], t[1], t[2], u[k]);
   if (shared == 1) {
     const int j = t_of_u[0] >= 0 ? 0 : (t_of_u[1] >= 0 ? 1 : 2);
     const int i = t_of_u[j];
-    const Vec3 &a = t[i];
-    const Vec3 &b = t[(i + 1) % 3];
-    const Vec3 &c = t[(i + 2) % 3];
-    const Vec3 &e = u[(j + 1) % 3];
-    const Vec3 &f = u[(j + 2) % 3];
-    if (one_side(su[(j + 1) % 3], su[(j + 2) % 3]))
-      return false;
-    if (projection_axis(u) < 0)
-      return false;
+    const Vec3& a = t[i];
+    const Vec3& b = t[(i + 1) % 3];
+    const Vec3& c = t[(i + 2) % 3];
+    const Vec3& e = u[(j + 1) % 3];
+    const Vec3& f = u[(j + 2) % 3];
+    if (one_side(su[(j + 1) % 3], su[(j + 2) % 3])) return false;
+    if (projection_axis(u) < 0) return false;
     if (su[(j + 1) % 3] == 0 && su[(j + 2) % 3] == 0) {
       const int t_axis = projection_axis(t);
       return t_axis >= 0 && coplanar_fans_meet(a, b, c, e, f, t_axis);
     }
-    if (one_side(orient3d(u[0], u[1], u[2], b), orient3d(u[0], u[1], u[2], c)))
-      return false;
-    // Each meets the planes' common line in a stretch from a; they overlap
-    // beyond a exactly when the shorter stretch's far end, which lies on the
-    // opposite edge, is in the other triangle.
-    return projection_axis(t) >= 0 &&
-           (segment_meets_triangle(e, f, t) || segment_meets_triangle(b, c, u));
+    if (one_side(orient3d(u[0], u[1], u[2], b), orient3d(u[0], u[1], u[2], c))) return false;
+    // Each meets the planes' common line in a stretch from a; they overlap beyond a exactly when the
+    // shorter stretch's far end, which lies on the opposite edge, is in the other triangle.
+    return projection_axis(t) >= 0 && (segment_meets_triangle(e, f, t) || segment_meets_triangle(b, c, u));
   }
-  if ((su[0] > 0 && su[1] > 0 && su[2] > 0) ||
-      (su[0] < 0 && su[1] < 0 && su[2] < 0))
-    return false;
+  if ((su[0] > 0 && su[1] > 0 && su[2] > 0) || (su[0] < 0 && su[1] < 0 && su[2] < 0)) return false;
   const int t_axis = projection_axis(t);
-  if (t_axis < 0)
-    return false;
-  if (su[0] == 0 && su[1] == 0 && su[2] == 0)
-    return coplanar_triangles_meet(t, u, t_axis);
-  const std::array<int, 3> st{orient3d(u[0], u[1], u[2], t[0]),
-                              orient3d(u[0], u[1], u[2], t[1]),
+  if (t_axis < 0) return false;
+  if (su[0] == 0 && su[1] == 0 && su[2] == 0) return coplanar_triangles_meet(t, u, t_axis);
+  const std::array<int, 3> st{orient3d(u[0], u[1], u[2], t[0]), orient3d(u[0], u[1], u[2], t[1]),
                               orient3d(u[0], u[1], u[2], t[2])};
-  if ((st[0] > 0 && st[1] > 0 && st[2] > 0) ||
-      (st[0] < 0 && st[1] < 0 && st[2] < 0))
-    return false;
-  // Not coplanar: the intersection is a segment whose ends lie on edges of t or
-  // of u.
+  if ((st[0] > 0 && st[1] > 0 && st[2] > 0) || (st[0] < 0 && st[1] < 0 && st[2] < 0)) return false;
+  // Not coplanar: the intersection is a segment whose ends lie on edges of t or of u.
   const bool u_flat = projection_axis(u) < 0;
   for (int k = 0; k < 3; ++k) {
-    if (segment_meets_triangle(u[k], u[(k + 1) % 3], t))
-      return true;
-    if (!u_flat && segment_meets_triangle(t[k], t[(k + 1) % 3], u))
-      return true;
+    if (segment_meets_triangle(u[k], u[(k + 1) % 3], t)) return true;
+    if (!u_flat && segment_meets_triangle(t[k], t[(k + 1) % 3], u)) return true;
   }
   return false;
 }
 
 namespace {
 
-/// What the pair loop needs of one triangle, packed together: its box, its
-/// lowest grid cell, its corners' indices, and its plane in double (first
-/// corner, normal, error scale).
+/// What the pair loop needs of one triangle, packed together: its box, its lowest grid cell, its
+/// corners' indices, and its plane in double (first corner, normal, error scale).
 struct TriangleRecord {
-  Vec3 origin; ///< first corner, m
-  Vec3 normal; ///< (b - a) x (c - a) as computed, m^2
-  double scale =
-      0.0;  ///< |b - a|_1 |c - a|_1, bounds the round-off of normal . (p - a)
-  Aabb box; ///< m
-  std::array<int, 3> low{}; ///< grid cell of box.min
+  Vec3 origin;                  ///< first corner, m
+  Vec3 normal;                  ///< (b - a) x (c - a) as computed, m^2
+  double scale = 0.0;           ///< |b - a|_1 |c - a|_1, bounds the round-off of normal . (p - a)
+  Aabb box;                     ///< m
+  std::array<int, 3> low{};     ///< grid cell of box.min
   Triangle corners{};
 };
 
-/// One triangle in one grid cell, packed so that the pair loop over a cell
-/// reads memory in order: the box rounded outwards to float (an overlap test
-/// that may pass more pairs, never fewer) and the lowest cell of the box.
+/// One triangle in one grid cell, packed so that the pair loop over a cell reads memory in order:
+/// the box rounded outwards to float (an overlap test that may pass more pairs, never fewer) and
+/// the lowest cell of the box.
 struct CellEntry {
   std::array<float, 3> min;
   std::array<float, 3> max;
@@ -254,79 +201,59 @@ struct CellEntry {
 
 float round_down(double x) {
   const auto f = static_cast<float>(x);
-  return static_cast<double>(f) > x
-             ? std::nextafter(f, -std::numeric_limits<float>::infinity())
-             : f;
+  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
 }
 
 float round_up(double x) {
   const auto f = static_cast<float>(x);
-  return static_cast<double>(f) < x
-             ? std::nextafter(f, std::numeric_limits<float>::infinity())
-             : f;
+  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
 }
 
-/// Sign of orient3d(a, b, c, p) for the record's triangle (a, b, c): the plane
-/// in double decides when it is clear by far more than its round-off (16 u of
-/// |b-a|_1 |c-a|_1 |p-a|_1 bounds it, as Shewchuk's permanent does), else the
-/// exact predicate. Positive: p below (on the inner side).
-int side(const TriangleRecord &t, const Mesh &mesh, const Vec3 &p) {
+/// Sign of orient3d(a, b, c, p) for the record's triangle (a, b, c): the plane in double decides
+/// when it is clear by far more than its round-off (16 u of |b-a|_1 |c-a|_1 |p-a|_1 bounds it, as
+/// Shewchuk's permanent does), else the exact predicate. Positive: p below (on the inner side).
+int side(const TriangleRecord& t, const Mesh& mesh, const Vec3& p) {
   const Vec3 g = p - t.origin;
   const double d = t.normal.dot(g);
   const double bound = 4e-15 * t.scale * g.cwiseAbs().sum();
-  if (d > bound)
-    return -1; // orient3d is positive on the side opposite to the normal
-  if (-d > bound)
-    return 1;
-  const Triangle &c = t.corners;
-  return orient3d(mesh.vertices[static_cast<std::size_t>(c[0])],
-                  mesh.vertices[static_cast<std::size_t>(c[1])],
+  if (d > bound) return -1;  // orient3d is positive on the side opposite to the normal
+  if (-d > bound) return 1;
+  const Triangle& c = t.corners;
+  return orient3d(mesh.vertices[static_cast<std::size_t>(c[0])], mesh.vertices[static_cast<std::size_t>(c[1])],
                   mesh.vertices[static_cast<std::size_t>(c[2])], p);
 }
 
-/// False when the pair certainly does not intersect by its corner indices and
-/// plane sides alone (most pairs: the neighbours around a vertex or an edge);
-/// true when the full test must decide.
-bool may_intersect(const TriangleRecord &t, const TriangleRecord &u,
-                   const Mesh &mesh) {
+/// False when the pair certainly does not intersect by its corner indices and plane sides alone
+/// (most pairs: the neighbours around a vertex or an edge); true when the full test must decide.
+bool may_intersect(const TriangleRecord& t, const TriangleRecord& u, const Mesh& mesh) {
   int free_sides[3];
   int free_count = 0;
   for (const std::int32_t v : u.corners) {
-    if (v == t.corners[0] || v == t.corners[1] || v == t.corners[2])
-      continue;
-    free_sides[free_count++] =
-        side(t, mesh, mesh.vertices[static_cast<std::size_t>(v)]);
+    if (v == t.corners[0] || v == t.corners[1] || v == t.corners[2]) continue;
+    free_sides[free_count++] = side(t, mesh, mesh.vertices[static_cast<std::size_t>(v)]);
   }
   switch (free_count) {
-  case 0:
-    return true;
-  case 1:
-    return free_sides[0] ==
-           0; // a common edge: only a fold onto t's plane can overlap
-  case 2:
-    return !one_side(free_sides[0], free_sides[1]);
-  default:
-    return !(one_side(free_sides[0], free_sides[1]) &&
-             one_side(free_sides[1], free_sides[2]));
+    case 0: return true;
+    case 1: return free_sides[0] == 0;  // a common edge: only a fold onto t's plane can overlap
+    case 2: return !one_side(free_sides[0], free_sides[1]);
+    default: return !(one_side(free_sides[0], free_sides[1]) && one_side(free_sides[1], free_sides[2]));
   }
 }
 
-} // namespace
+}  // namespace
 
-std::optional<std::array<std::int32_t, 2>>
-find_self_intersection(const Mesh &mesh) {
+std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& mesh) {
   const std::size_t n = mesh.triangles.size();
-  if (n < 2)
-    return std::nullopt;
+  if (n < 2) return std::nullopt;
   std::vector<TriangleRecord> records(n);
   Aabb all;
   double extent_sum = 0.0;
   for (std::size_t f = 0; f < n; ++f) {
-    TriangleRecord &r = records[f];
+    TriangleRecord& r = records[f];
     r.corners = mesh.triangles[f];
-    const Vec3 &a = mesh.vertices[static_cast<std::size_t>(r.corners[0])];
-    const Vec3 &b = mesh.vertices[static_cast<std::size_t>(r.corners[1])];
-    const Vec3 &c = mesh.vertices[static_cast<std::size_t>(r.corners[2])];
+    const Vec3& a = mesh.vertices[static_cast<std::size_t>(r.corners[0])];
+    const Vec3& b = mesh.vertices[static_cast<std::size_t>(r.corners[1])];
+    const Vec3& c = mesh.vertices[static_cast<std::size_t>(r.corners[2])];
     const Vec3 e = b - a;
     const Vec3 g = c - a;
     r.origin = a;
@@ -340,58 +267,41 @@ find_self_intersection(const Mesh &mesh) {
   }
   // Cells about the mean triangle's extent, at most 4 #F of them.
   const Vec3 size = (all.max - all.min).cwiseMax(1e-300);
-  double cell =
-      std::max(extent_sum / static_cast<double>(n), 1e-12 * size.maxCoeff());
+  double cell = std::max(extent_sum / static_cast<double>(n), 1e-12 * size.maxCoeff());
   const double budget = 4.0 * static_cast<double>(n);
-  const double wanted = std::ceil(size.x() / cell) *
-                        std::ceil(size.y() / cell) * std::ceil(size.z() / cell);
-  if (wanted > budget)
-    cell *= std::cbrt(wanted / budget) * 1.01;
+  const double wanted = std::ceil(size.x() / cell) * std::ceil(size.y() / cell) * std::ceil(size.z() / cell);
+  if (wanted > budget) cell *= std::cbrt(wanted / budget) * 1.01;
   std::array<int, 3> dims;
-  for (int k = 0; k < 3; ++k)
-    dims[k] =
-        std::clamp(static_cast<int>(std::ceil(size[k] / cell)), 1, 1 << 20);
+  for (int k = 0; k < 3; ++k) dims[k] = std::clamp(static_cast<int>(std::ceil(size[k] / cell)), 1, 1 << 20);
   const auto coordinate = [&](double x, int k) {
-    return std::clamp(static_cast<int>((x - all.min[k]) / cell), 0,
-                      dims[k] - 1);
+    return std::clamp(static_cast<int>((x - all.min[k]) / cell), 0, dims[k] - 1);
   };
-  const auto index = [&](int x, int y, int z) {
-    return (static_cast<std::size_t>(z) * dims[1] + y) * dims[0] + x;
-  };
-  const std::size_t cells =
-      static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
+  const auto index = [&](int x, int y, int z) { return (static_cast<std::size_t>(z) * dims[1] + y) * dims[0] + x; };
+  const std::size_t cells = static_cast<std::size_t>(dims[0]) * dims[1] * dims[2];
   std::vector<std::array<int, 3>> high(n);
   std::vector<std::int32_t> start(cells + 1, 0);
   for (std::size_t f = 0; f < n; ++f) {
-    TriangleRecord &r = records[f];
-    for (int k = 0; k < 3; ++k)
-      r.low[k] = coordinate(r.box.min[k], k),
-      high[f][k] = coordinate(r.box.max[k], k);
+    TriangleRecord& r = records[f];
+    for (int k = 0; k < 3; ++k) r.low[k] = coordinate(r.box.min[k], k), high[f][k] = coordinate(r.box.max[k], k);
     for (int z = r.low[2]; z <= high[f][2]; ++z)
       for (int y = r.low[1]; y <= high[f][1]; ++y)
-        for (int x = r.low[0]; x <= high[f][0]; ++x)
-          ++start[index(x, y, z) + 1];
+        for (int x = r.low[0]; x <= high[f][0]; ++x) ++start[index(x, y, z) + 1];
   }
-  for (std::size_t c = 1; c <= cells; ++c)
-    start[c] += start[c - 1];
+  for (std::size_t c = 1; c <= cells; ++c) start[c] += start[c - 1];
   std::vector<CellEntry> members(static_cast<std::size_t>(start[cells]));
   std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < n; ++f) {
-    const TriangleRecord &r = records[f];
+    const TriangleRecord& r = records[f];
     CellEntry entry{};
-    for (int k = 0; k < 3; ++k)
-      entry.min[k] = round_down(r.box.min[k]),
-      entry.max[k] = round_up(r.box.max[k]);
+    for (int k = 0; k < 3; ++k) entry.min[k] = round_down(r.box.min[k]), entry.max[k] = round_up(r.box.max[k]);
     entry.low = r.low;
     entry.triangle = static_cast<std::int32_t>(f);
     for (int z = r.low[2]; z <= high[f][2]; ++z)
       for (int y = r.low[1]; y <= high[f][1]; ++y)
-        for (int x = r.low[0]; x <= high[f][0]; ++x)
-          members[static_cast<std::size_t>(fill[index(x, y, z)]++)] = entry;
+        for (int x = r.low[0]; x <= high[f][0]; ++x) members[static_cast<std::size_t>(fill[index(x, y, z)]++)] = entry;
   }
-  const auto corners = [&](const TriangleRecord &r) {
-    return Corners{mesh.vertices[static_cast<std::size_t>(r.corners[0])],
-                   mesh.vertices[static_cast<std::size_t>(r.corners[1])],
+  const auto corners = [&](const TriangleRecord& r) {
+    return Corners{mesh.vertices[static_cast<std::size_t>(r.corners[0])], mesh.vertices[static_cast<std::size_t>(r.corners[1])],
                    mesh.vertices[static_cast<std::size_t>(r.corners[2])]};
   };
   std::vector<std::array<std::int32_t, 2>> candidates;
@@ -399,33 +309,27 @@ find_self_intersection(const Mesh &mesh) {
     for (int y = 0; y < dims[1]; ++y)
       for (int x = 0; x < dims[0]; ++x) {
         const std::size_t c = index(x, y, z);
-        const CellEntry *first = members.data() + start[c];
-        const CellEntry *last = members.data() + start[c + 1];
-        // The pairs this cell owns with overlapping boxes, gathered without a
-        // branch per pair (which way the two tests go is close to a coin toss,
-        // and mispredictions were most of the loop's time), then tested.
+        const CellEntry* first = members.data() + start[c];
+        const CellEntry* last = members.data() + start[c + 1];
+        // The pairs this cell owns with overlapping boxes, gathered without a branch per pair (which
+        // way the two tests go is close to a coin toss, and mispredictions were most of the loop's
+        // time), then tested.
         candidates.clear();
-        for (const CellEntry *ea = first; ea != last; ++ea) {
-          for (const CellEntry *eb = ea + 1; eb != last; ++eb) {
-            // Each pair once: in the cell of the lower corner of the boxes'
-            // overlap.
-            const bool owned = (std::max(ea->low[0], eb->low[0]) == x) &
-                               (std::max(ea->low[1], eb->low[1]) == y) &
+        for (const CellEntry* ea = first; ea != last; ++ea) {
+          for (const CellEntry* eb = ea + 1; eb != last; ++eb) {
+            // Each pair once: in the cell of the lower corner of the boxes' overlap.
+            const bool owned = (std::max(ea->low[0], eb->low[0]) == x) & (std::max(ea->low[1], eb->low[1]) == y) &
                                (std::max(ea->low[2], eb->low[2]) == z);
-            const bool overlap =
-                (ea->min[0] <= eb->max[0]) & (eb->min[0] <= ea->max[0]) &
-                (ea->min[1] <= eb->max[1]) & (eb->min[1] <= ea->max[1]) &
-                (ea->min[2] <= eb->max[2]) & (eb->min[2] <= ea->max[2]);
+            const bool overlap = (ea->min[0] <= eb->max[0]) & (eb->min[0] <= ea->max[0]) & (ea->min[1] <= eb->max[1]) &
+                                 (eb->min[1] <= ea->max[1]) & (ea->min[2] <= eb->max[2]) & (eb->min[2] <= ea->max[2]);
             candidates.push_back({ea->triangle, eb->triangle});
-            candidates.resize(candidates.size() -
-                              static_cast<std::size_t>(!(owned & overlap)));
+            candidates.resize(candidates.size() - static_cast<std::size_t>(!(owned & overlap)));
           }
         }
-        for (const auto &[a, b] : candidates) {
-          const TriangleRecord &ra = records[static_cast<std::size_t>(a)];
-          const TriangleRecord &rb = records[static_cast<std::size_t>(b)];
-          if (may_intersect(ra, rb, mesh) && may_intersect(rb, ra, mesh) &&
-              triangles_intersect(corners(ra), corners(rb)))
+        for (const auto& [a, b] : candidates) {
+          const TriangleRecord& ra = records[static_cast<std::size_t>(a)];
+          const TriangleRecord& rb = records[static_cast<std::size_t>(b)];
+          if (may_intersect(ra, rb, mesh) && may_intersect(rb, ra, mesh) && triangles_intersect(corners(ra), corners(rb)))
             return std::array<std::int32_t, 2>{std::min(a, b), std::max(a, b)};
         }
       }
@@ -436,11 +340,10 @@ namespace {
 
 /// The fingerprints of the last meshes found clean, oldest overwritten first.
 class CleanVerdicts {
-public:
+ public:
   bool contains(std::uint64_t fingerprint) {
     const std::lock_guard lock(mutex_);
-    return std::find(seen_.begin(), seen_.begin() + count_, fingerprint) !=
-           seen_.begin() + count_;
+    return std::find(seen_.begin(), seen_.begin() + count_, fingerprint) != seen_.begin() + count_;
   }
   void add(std::uint64_t fingerprint) {
     const std::lock_guard lock(mutex_);
@@ -453,34 +356,32 @@ public:
     count_ = next_ = 0;
   }
 
-private:
+ private:
   std::mutex mutex_;
   std::array<std::uint64_t, kRememberedCleanMeshes> seen_{};
   std::size_t count_ = 0;
   std::size_t next_ = 0;
 };
 
-CleanVerdicts &clean_verdicts() {
+CleanVerdicts& clean_verdicts() {
   static CleanVerdicts verdicts;
   return verdicts;
 }
 
-} // namespace
+}  // namespace
 
-Status check_no_self_intersection(const Mesh &mesh, std::string_view who) {
+Status check_no_self_intersection(const Mesh& mesh, std::string_view who) {
   const std::uint64_t fingerprint = mesh_fingerprint(mesh);
-  if (clean_verdicts().contains(fingerprint))
-    return {};
+  if (clean_verdicts().contains(fingerprint)) return {};
   const auto pair = find_self_intersection(mesh);
   if (!pair) {
     clean_verdicts().add(fingerprint);
     return {};
   }
-  return Error{
-      std::string(who) + ": the input mesh intersects itself (triangles " +
-      std::to_string((*pair)[0]) + " and " + std::to_string((*pair)[1]) + ")"};
+  return Error{std::string(who) + ": the input mesh intersects itself (triangles " + std::to_string((*pair)[0]) +
+               " and " + std::to_string((*pair)[1]) + ")"};
 }
 
 void forget_self_intersection_verdicts() { clean_verdicts().clear(); }
 
-} // namespace shatter
+}  // namespace shatter

@@ -1,19 +1,16 @@
 #pragma once
-/// Exact self-intersection test of a triangle mesh: do two of its triangles
-/// meet anywhere other than at the corners and the edge they share?
+/// Exact self-intersection test of a triangle mesh: do two of its triangles meet anywhere other than
+/// at the corners and the edge they share?
 ///
-/// Design note: fracturers whose caps are bounded by the cut outline (voronoi,
-/// fem-lite) cannot give a partition of a solid whose surface crosses itself
-/// (the outline then crosses itself), so they refuse such input up front, as
-/// the exact reference does (CGAL's does_self_intersect). The test has to cost
-/// little next to a fracture: triangles are binned in a uniform grid whose cell
-/// is about the mean triangle's extent, each pair of triangles sharing a cell
-/// with overlapping boxes is tested once (in the cell of the lower corner of
-/// the boxes' overlap), and most pairs are settled by three plane-side tests.
-/// Every decision is an exact predicate (orient3d, orient2d) on the stored
-/// doubles. Corners count as shared when their positions are equal (not only
-/// their indices), so sheets split at a pinched vertex, which touch there, are
-/// not reported.
+/// Design note: fracturers whose caps are bounded by the cut outline (voronoi, fem-lite) cannot give
+/// a partition of a solid whose surface crosses itself (the outline then crosses itself), so they
+/// refuse such input up front, as the exact reference does (CGAL's does_self_intersect). The test
+/// has to cost little next to a fracture: triangles are binned in a uniform grid whose cell is about
+/// the mean triangle's extent, each pair of triangles sharing a cell with overlapping boxes is tested
+/// once (in the cell of the lower corner of the boxes' overlap), and most pairs are settled by three
+/// plane-side tests. Every decision is an exact predicate (orient3d, orient2d) on the stored doubles.
+/// Corners count as shared when their positions are equal (not only their indices), so sheets split
+/// at a pinched vertex, which touch there, are not reported.
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
@@ -26,33 +23,26 @@
 
 namespace shatter {
 
-/// True when the closed triangles t and u (corners, m) have a point in common
-/// other than their common corners and the edge between two common corners. Two
-/// copies of one triangle intersect.
-bool triangles_intersect(const std::array<Vec3, 3> &t,
-                         const std::array<Vec3, 3> &u);
+/// True when the closed triangles t and u (corners, m) have a point in common other than their
+/// common corners and the edge between two common corners. Two copies of one triangle intersect.
+bool triangles_intersect(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u);
 
-/// The first pair of triangles of `mesh` (indices, smaller first, in the grid's
-/// order) that intersect (triangles_intersect), or nothing. O(#F) on a
-/// surface-like mesh.
-std::optional<std::array<std::int32_t, 2>>
-find_self_intersection(const Mesh &mesh);
+/// The first pair of triangles of `mesh` (indices, smaller first, in the grid's order) that
+/// intersect (triangles_intersect), or nothing. O(#F) on a surface-like mesh.
+std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& mesh);
 
 /// How many clean verdicts check_no_self_intersection remembers.
 inline constexpr std::size_t kRememberedCleanMeshes = 64;
 
-/// Error "<who>: the input mesh intersects itself (triangles i and j)" when
-/// find_self_intersection finds a pair, else success. A clean verdict is
-/// remembered by the mesh's fingerprint (mesh_fingerprint.h) for the last
-/// kRememberedCleanMeshes clean meshes, and the same mesh is not tested again:
-/// the test costs about 0.45 us per triangle, more than a 5-fragment Voronoi
-/// fracture, while games and the grid break the same solid many times (every
-/// instance of an asset, every repetition of a cell). Thread-safe. A mesh that
-/// intersects itself is tested every time.
-Status check_no_self_intersection(const Mesh &mesh, std::string_view who);
+/// Error "<who>: the input mesh intersects itself (triangles i and j)" when find_self_intersection
+/// finds a pair, else success. A clean verdict is remembered by the mesh's fingerprint
+/// (mesh_fingerprint.h) for the last kRememberedCleanMeshes clean meshes, and the same mesh is not
+/// tested again: the test costs about 0.45 us per triangle, more than a 5-fragment Voronoi fracture,
+/// while games and the grid break the same solid many times (every instance of an asset, every
+/// repetition of a cell). Thread-safe. A mesh that intersects itself is tested every time.
+Status check_no_self_intersection(const Mesh& mesh, std::string_view who);
 
-/// Forgets every remembered clean verdict (for benchmarks that time a solid's
-/// first fracture).
+/// Forgets every remembered clean verdict (for benchmarks that time a solid's first fracture).
 void forget_self_intersection_verdicts();
 
-} // namespace shatter
+}  // namespace shatter
