@@ -16,6 +16,7 @@ namespace {
 struct MergeOptions {
   std::vector<std::string> parts;
   std::string out;
+  bool repetitions = false;
 };
 
 int run_merge(const MergeOptions& o) {
@@ -25,7 +26,7 @@ int run_merge(const MergeOptions& o) {
     if (!g) return fail_input(g.error().message);
     parts.push_back(std::move(*g));
   }
-  Result<StoredGrid> merged = merge_grids(parts);
+  Result<StoredGrid> merged = merge_grids(parts, o.repetitions ? MergeParts::repetitions : MergeParts::shards);
   if (!merged) return fail_input(merged.error().message);
   if (std::filesystem::is_directory(o.out)) return fail_input("--out: " + o.out + " is a folder, not a file");
   std::error_code ec;
@@ -45,8 +46,11 @@ int run_merge(const MergeOptions& o) {
 
 void add_merge_command(CLI::App& app, int& exit_code) {
   auto o = std::make_shared<MergeOptions>();
-  CLI::App* cmd = app.add_subcommand("merge", "Join the shards of one grid (grid --shard K/N) into one results file");
-  cmd->add_option("PARTS", o->parts, "Shard results JSON files")->required();
+  CLI::App* cmd = app.add_subcommand(
+      "merge", "Join the shards of one grid (grid --shard K/N), or repeated runs of it, into one results file");
+  cmd->add_option("PARTS", o->parts, "Results JSON files")->required();
+  cmd->add_flag("--repetitions", o->repetitions,
+                "The parts are runs of the same cells (e.g. interleaved with another build's): join their samples");
   cmd->add_option("--out", o->out, "The merged results JSON (and the CSV beside it)")->required();
   cmd->callback([o, &exit_code] { exit_code = run_merge(*o); });
 }

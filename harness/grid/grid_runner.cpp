@@ -134,6 +134,36 @@ void summarise_schedule(GridCell& cell, double latency_budget_ms) {
   cell.within_latency_budget = cell.latency_ms <= latency_budget_ms;
 }
 
+void summarise_cell(GridCell& cell, double budget_ms, double latency_budget_ms) {
+  std::vector<double> frames;
+  for (const GridSample& s : cell.samples) frames.insert(frames.end(), s.frame_ms.begin(), s.frame_ms.end());
+  cell.frame_ms = sample_statistics(frames);
+  cell.worst_frame_ms = median_over(cell.samples, &GridSample::worst_frame_ms);
+  cell.event_ms = median_over(cell.samples, &GridSample::event_ms);
+  cell.stages_ms = median_stages(cell.samples, &GridSample::stages_ms);
+  cell.setup_ms = median_stages(cell.samples, &GridSample::setup_ms);
+  cell.within_budget = cell.worst_frame_ms <= budget_ms;
+  summarise_schedule(cell, latency_budget_ms);
+}
+
+void add_cell_error(CellError& into, const CellError& other) {
+  into.prefracture_volume_error = std::max(into.prefracture_volume_error, other.prefracture_volume_error);
+  into.prefracture_partition_error = std::max(into.prefracture_partition_error, other.prefracture_partition_error);
+  into.prefracture_all_closed = into.prefracture_all_closed && other.prefracture_all_closed;
+  into.prefracture_min_fragment_volume =
+      std::min(into.prefracture_min_fragment_volume, other.prefracture_min_fragment_volume);
+  into.runtime_volume_error = std::max(into.runtime_volume_error, other.runtime_volume_error);
+  into.runtime_partition_error = std::max(into.runtime_partition_error, other.runtime_partition_error);
+  into.runtime_all_closed = into.runtime_all_closed && other.runtime_all_closed;
+  // 0 stands for "no runtime pieces" (add_error).
+  if (into.runtime_min_fragment_volume == 0.0 || other.runtime_min_fragment_volume == 0.0)
+    into.runtime_min_fragment_volume = std::max(into.runtime_min_fragment_volume, other.runtime_min_fragment_volume);
+  else
+    into.runtime_min_fragment_volume = std::min(into.runtime_min_fragment_volume, other.runtime_min_fragment_volume);
+  into.solver_converged = into.solver_converged && other.solver_converged;
+  into.solver_residual = std::max(into.solver_residual, other.solver_residual);
+}
+
 bool GridResult::passed() const {
   return std::all_of(cells.begin(), cells.end(),
                      [](const GridCell& c) { return c.within_budget && c.within_latency_budget; });
@@ -234,15 +264,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
         merge_stages(cell, *result);
         if (o.progress) o.progress(++done, total);
       }
-      std::vector<double> frames;
-      for (const GridSample& s : cell.samples) frames.insert(frames.end(), s.frame_ms.begin(), s.frame_ms.end());
-      cell.frame_ms = sample_statistics(frames);
-      cell.worst_frame_ms = median_over(cell.samples, &GridSample::worst_frame_ms);
-      cell.event_ms = median_over(cell.samples, &GridSample::event_ms);
-      cell.stages_ms = median_stages(cell.samples, &GridSample::stages_ms);
-      cell.setup_ms = median_stages(cell.samples, &GridSample::setup_ms);
-      cell.within_budget = cell.worst_frame_ms <= out.budget_ms;
-      summarise_schedule(cell, out.latency_budget_ms);
+      summarise_cell(cell, out.budget_ms, out.latency_budget_ms);
       out.cells.push_back(std::move(cell));
     }
   }

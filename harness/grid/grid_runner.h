@@ -155,6 +155,13 @@ Status check_grid_options(const Case& c, const GridOptions& options);
 /// its latency against `latency_budget_ms`.
 void summarise_schedule(GridCell& cell, double latency_budget_ms);
 
+/// Fills every summary of `cell` from its samples (frame statistics, medians over repetitions, the
+/// schedule summary) and judges it against `budget_ms` and `latency_budget_ms`.
+void summarise_cell(GridCell& cell, double budget_ms, double latency_budget_ms);
+
+/// Makes `into` the worst of the two error figures (as if their repetitions had been one cell's).
+void add_cell_error(CellError& into, const CellError& other);
+
 /// Runs the grid of `prepared` (options checked by check_grid_options).
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options);
 

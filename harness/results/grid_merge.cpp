@@ -3,12 +3,62 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <map>
+#include <string>
 #include <set>
 #include <tuple>
 
 namespace shatter {
 
-Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts) {
+namespace {
+
+using CellKey = std::tuple<int, int, std::string, std::string, std::string>;
+
+CellKey key_of(const GridCell& c) { return {c.prefracture, c.runtime, c.prefracturer, c.fracturer, c.stress}; }
+
+std::string cell_name(const GridCell& c) { return fmt::format("{} x {}", c.prefracture, c.runtime); }
+
+/// Joins the samples of each cell of `parts` (checked alike but for repetitions) into `out`.
+Result<StoredGrid> join_repetitions(const std::vector<StoredGrid>& parts, StoredGrid out) {
+  std::map<CellKey, std::size_t> index;
+  for (std::size_t i = 0; i < out.grid.cells.size(); ++i)
+    if (!index.emplace(key_of(out.grid.cells[i]), i).second)
+      return Error{fmt::format("merge: cell {} appears twice in {}", cell_name(out.grid.cells[i]), out.path.string())};
+  for (std::size_t k = 1; k < parts.size(); ++k) {
+    const StoredGrid& p = parts[k];
+    if (p.grid.cells.size() != out.grid.cells.size())
+      return Error{fmt::format("merge: {} has {} cells, {} has {}: repetitions must hold the same cells",
+                               p.path.string(), p.grid.cells.size(), parts.front().path.string(),
+                               out.grid.cells.size())};
+    for (const GridCell& c : p.grid.cells) {
+      const auto it = index.find(key_of(c));
+      if (it == index.end())
+        return Error{fmt::format("merge: cell {} of {} is not in {}", cell_name(c), p.path.string(),
+                                 parts.front().path.string())};
+      GridCell& into = out.grid.cells[it->second];
+      if (c.schedule != into.schedule)
+        return Error{fmt::format("merge: {} differs from {} in the schedule of cell {}", p.path.string(),
+                                 parts.front().path.string(), cell_name(c))};
+      into.samples.insert(into.samples.end(), c.samples.begin(), c.samples.end());
+      add_cell_error(into.error, c.error);
+      for (const std::string& stage : c.stages_run)
+        if (std::find(into.stages_run.begin(), into.stages_run.end(), stage) == into.stages_run.end())
+          into.stages_run.push_back(stage);
+      for (const StageSkip& skip : c.stages_skipped)
+        if (std::none_of(into.stages_skipped.begin(), into.stages_skipped.end(),
+                         [&](const StageSkip& s) { return s.stage == skip.stage && s.reason == skip.reason; }))
+          into.stages_skipped.push_back(skip);
+    }
+    out.grid.repetitions += p.grid.repetitions;
+    out.grid.wall_s += p.grid.wall_s;
+  }
+  for (GridCell& c : out.grid.cells) summarise_cell(c, out.grid.budget_ms, out.grid.latency_budget_ms);
+  return out;
+}
+
+}  // namespace
+
+Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts, MergeParts kind) {
   if (parts.empty()) return Error{"merge: no results to merge"};
   const StoredGrid& first = parts.front();
   StoredGrid out = first;
@@ -27,16 +77,23 @@ Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts) {
     if (p.case_block != first.case_block) return differs("the case");
     if (p.metric != first.metric) return differs("the metric");
     if (p.grid.budget_ms != first.grid.budget_ms) return differs("budget_ms");
-    if (p.grid.repetitions != first.grid.repetitions) return differs("repetitions");
+    if (kind == MergeParts::shards && p.grid.repetitions != first.grid.repetitions) return differs("repetitions");
+    if (p.grid.latency_budget_ms != first.grid.latency_budget_ms) return differs("latency_budget_ms");
     if (p.grid.frames != first.grid.frames) return differs("frames");
     if (p.grid.no_skip != first.grid.no_skip) return differs("no_skip");
     if (p.grid.same_seed != first.grid.same_seed) return differs("same_seed");
+    if (kind == MergeParts::repetitions) continue;
     for (const GridCell& c : p.grid.cells) {
       if (!seen.emplace(c.prefracture, c.runtime, c.prefracturer, c.fracturer, c.stress).second)
         return Error{fmt::format("merge: cell {} x {} appears twice (again in {})", c.prefracture, c.runtime, name)};
       out.grid.cells.push_back(c);
     }
     out.grid.wall_s += p.grid.wall_s;
+  }
+  if (kind == MergeParts::repetitions) {
+    out.grid.cells = first.grid.cells;
+    out.grid.wall_s = first.grid.wall_s;
+    return join_repetitions(parts, std::move(out));
   }
   std::stable_sort(out.grid.cells.begin(), out.grid.cells.end(), [](const GridCell& a, const GridCell& b) {
     return std::tie(a.prefracture, a.runtime) < std::tie(b.prefracture, b.runtime);

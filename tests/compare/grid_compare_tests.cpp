@@ -213,6 +213,50 @@ TEST_CASE("merge: shards join into the unsharded grid; mismatched shards are ref
   CHECK(bad.error().message.find("commit") != std::string::npos);
 }
 
+TEST_CASE("merge --repetitions: runs of the same cells join their samples, summaries recomputed", "[compare]") {
+  // Two runs of 3 repetitions whose worst frames are 3 f: f = 1 +- 0.05 and f = 2 +- 0.05.
+  GridResult a = synthetic(3, 1.0, 0.05, 1);
+  GridResult b = synthetic(3, 2.0, 0.05, 2);
+  a.cells[1].error.runtime_volume_error = 1e-12;
+  b.cells[1].error.runtime_volume_error = 3e-12;
+  b.cells[1].error.runtime_all_closed = false;
+  Result<StoredGrid> joined = merge_grids({stored(a, context(), "a"), stored(b, context(), "b")}, MergeParts::repetitions);
+  REQUIRE(joined);
+  CHECK(joined->grid.repetitions == 6);
+  REQUIRE(joined->grid.cells.size() == 2);
+  for (std::size_t i = 0; i < 2; ++i) {
+    const GridCell& c = joined->grid.cells[i];
+    REQUIRE(c.samples.size() == 6);
+    CHECK(c.samples[0].worst_frame_ms == a.cells[i].samples[0].worst_frame_ms);  // a's first, in order
+    CHECK(c.samples[3].worst_frame_ms == b.cells[i].samples[0].worst_frame_ms);
+    // The median of six: the mean of the third and fourth smallest, i.e. of a's largest and b's smallest.
+    double a_max = 0.0, b_min = 1e300;
+    for (const GridSample& s : a.cells[i].samples) a_max = std::max(a_max, s.worst_frame_ms);
+    for (const GridSample& s : b.cells[i].samples) b_min = std::min(b_min, s.worst_frame_ms);
+    CHECK(c.worst_frame_ms == Approx(0.5 * (a_max + b_min)).epsilon(1e-12));
+    CHECK(c.frame_ms.count == 24);
+  }
+  CHECK(joined->grid.cells[1].error.runtime_volume_error == 3e-12);
+  CHECK_FALSE(joined->grid.cells[1].error.runtime_all_closed);
+  // Not the same cells, or another build: refused, naming the reason.
+  GridResult one_cell = b;
+  one_cell.cells.pop_back();
+  const auto fewer = merge_grids({stored(a, context(), "a"), stored(one_cell, context(), "b")}, MergeParts::repetitions);
+  REQUIRE_FALSE(fewer);
+  CHECK_THAT(fewer.error().message, Catch::Contains("must hold the same cells"));
+  GridResult moved = b;
+  moved.cells[1].prefracture = 50;
+  const auto other_cell = merge_grids({stored(a, context(), "a"), stored(moved, context(), "b")}, MergeParts::repetitions);
+  REQUIRE_FALSE(other_cell);
+  CHECK_THAT(other_cell.error().message, Catch::Contains("cell 50 x 25 of b is not in a"));
+  RunContext other = context();
+  other.compiler = "Clang 14.0.6";
+  other.fingerprint = context_fingerprint(other);
+  const auto rebuilt = merge_grids({stored(a, context(), "a"), stored(b, other, "b")}, MergeParts::repetitions);
+  REQUIRE_FALSE(rebuilt);
+  CHECK_THAT(rebuilt.error().message, Catch::Contains("fingerprint"));
+}
+
 TEST_CASE("gbench output has Google Benchmark's keys", "[compare]") {
   const auto j = grid_to_gbench_json(synthetic(3, 1.0, 0.05, 1), "synthetic", context());
   for (const char* key : {"date", "host_name", "executable", "num_cpus", "mhz_per_cpu", "cpu_scaling_enabled", "caches",

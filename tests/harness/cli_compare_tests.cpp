@@ -60,6 +60,26 @@ TEST_CASE("cli: merge of two shards holds the cells of the unsharded run", "[cli
   CHECK_FALSE(std::filesystem::exists(dir / "bad.json"));
 }
 
+TEST_CASE("cli: merge --repetitions joins runs of the same cells", "[cli][compare]") {
+  const auto dir = scratch("repetitions");
+  const std::string run = kSmall + " --same-seed --json ";
+  REQUIRE(run_cli(run + (dir / "r1.json").string()).exit_code == 0);
+  REQUIRE(run_cli(run + (dir / "r2.json").string()).exit_code == 0);
+  const auto r = run_cli("merge --repetitions " + (dir / "r1.json").string() + " " + (dir / "r2.json").string() +
+                         " --out " + (dir / "joined.json").string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  const auto joined = nlohmann::json::parse(slurp(dir / "joined.json"));
+  CHECK(joined.at("repetitions") == 2);
+  REQUIRE(joined.at("cells").size() == 4);
+  for (const auto& c : joined.at("cells")) CHECK(c.at("samples").size() == 2);
+  // Shards are not repetitions: without the flag the same cells twice are refused.
+  const auto as_shards = run_cli("merge " + (dir / "r1.json").string() + " " + (dir / "r2.json").string() + " --out " +
+                                 (dir / "bad.json").string());
+  CHECK(as_shards.exit_code == 2);
+  CHECK_FALSE(std::filesystem::exists(dir / "bad.json"));
+}
+
 TEST_CASE("cli: compare passes on itself, fails on a missing cell, refuses bad input", "[cli][compare]") {
   const auto dir = scratch("compare");
   const auto all = (dir / "all.json").string(), part = (dir / "part.json").string();
