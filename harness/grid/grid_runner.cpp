@@ -1,20 +1,68 @@
 #include "harness/grid/grid_runner.h"
 
+#include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/register_all.h"
 #include "harness/grid/calibration.h"
+#include "harness/limits.h"
 #include "harness/pipeline/instruction_marks.h"
+
+#include <fmt/core.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 namespace shatter {
 namespace {
 
 Status check_counts(const std::vector<int>& counts, const std::string& what) {
   if (counts.empty()) return Error{what + ": at least one count is needed"};
-  for (const int n : counts)
+  for (const int n : counts) {
     if (n < 1) return Error{what + ": counts must be >= 1, got " + std::to_string(n)};
+    if (n > kMaxFragments)
+      return Error{what + ": counts must be <= " + std::to_string(kMaxFragments) + " (the fragment limit), got " +
+                   std::to_string(n)};
+  }
+  return {};
+}
+
+/// The pre-fracture counts a grid runs: the flag's, else the case's; explicit planes make one.
+std::vector<int> prefracture_counts(const Case& c, const GridOptions& o) {
+  if (c.prefracture.explicit_planes()) return {static_cast<int>(c.prefracture.planes.size()) + 1};
+  return o.prefracture.empty() ? c.grid.prefracture : o.prefracture;
+}
+
+/// The runtime counts a grid runs: the flag's, else the case's.
+const std::vector<int>& runtime_counts(const Case& c, const GridOptions& o) {
+  return o.runtime.empty() ? c.grid.runtime : o.runtime;
+}
+
+/// The limits of harness/limits.h on the grid as a whole, once every value is known to be in range.
+Status check_grid_limits(const Case& c, const GridOptions& o) {
+  const std::vector<int> prefracture = prefracture_counts(c, o);
+  const std::vector<int>& runtime = runtime_counts(c, o);
+  const std::string axes = std::string(o.prefracture.empty() ? "grid.prefracture" : "--prefracture") + " x " +
+                           (o.runtime.empty() ? "grid.runtime" : "--runtime");
+  const auto cells = static_cast<std::int64_t>(prefracture.size()) * static_cast<std::int64_t>(runtime.size());
+  if (cells > kMaxGridCells)
+    return Error{fmt::format("{}: {} x {} = {} cells exceed the limit of {} cells per grid", axes, prefracture.size(),
+                             runtime.size(), cells, kMaxGridCells)};
+  const std::int64_t p = *std::max_element(prefracture.begin(), prefracture.end());
+  const std::int64_t r = *std::max_element(runtime.begin(), runtime.end());
+  if (p * r > kMaxRunPieces)
+    return Error{
+        fmt::format("{}: cell {} x {} can make {} runtime pieces, which exceeds the limit of {} pieces per run", axes,
+                    p, r, p * r, kMaxRunPieces)};
+  std::int64_t cells_here = 0;
+  for (std::int64_t i = 0; i < cells; ++i) cells_here += i % o.shard_count == o.shard_index ? 1 : 0;
+  const std::int64_t frames = o.frames > 0 ? o.frames : c.frames;
+  const std::int64_t recorded = cells_here * o.repetitions * frames;
+  if (recorded > kMaxRecordedFrames)
+    return Error{
+        fmt::format("--frames x --repetitions x cells: {} x {} x {} = {} frames recorded exceed the limit of {} "
+                    "per grid (fewer frames, repetitions or cells, or --shard, bring it under)",
+                    frames, o.repetitions, cells_here, recorded, kMaxRecordedFrames)};
   return {};
 }
 
@@ -160,7 +208,12 @@ Status check_grid_options(const Case& c, const GridOptions& o) {
   if (!std::isfinite(o.latency_budget_ms) || !(o.latency_budget_ms > 0.0))
     return Error{"--latency-budget-ms: must be a finite number > 0, got " + std::to_string(o.latency_budget_ms)};
   if (o.repetitions < 1) return Error{"--repetitions: must be >= 1, got " + std::to_string(o.repetitions)};
+  if (o.repetitions > kMaxRepetitions)
+    return Error{
+        fmt::format("--repetitions: must be <= {} (the limit per cell), got {}", kMaxRepetitions, o.repetitions)};
   if (o.frames < 0) return Error{"--frames: must be >= 1, got " + std::to_string(o.frames)};
+  if (o.frames > kMaxFrames)
+    return Error{fmt::format("--frames: must be <= {} (the limit per run), got {}", kMaxFrames, o.frames)};
   if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     return Error{"--shard: K/N needs N >= 1 and 0 <= K < N, got " + std::to_string(o.shard_index) + "/" +
@@ -169,7 +222,7 @@ Status check_grid_options(const Case& c, const GridOptions& o) {
     if (Status s = check_counts(o.prefracture, "--prefracture"); !s) return s;
   if (!o.runtime.empty())
     if (Status s = check_counts(o.runtime, "--runtime"); !s) return s;
-  return {};
+  return check_grid_limits(c, o);
 }
 
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) {

@@ -148,7 +148,8 @@ struct GridResult {
 };
 
 /// Checks `options` against `c` before anything runs: algorithm names exist (errors name the flag or
-/// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1.
+/// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1, and the limits of
+/// harness/limits.h (repetitions, frames, fragment counts, cells, pieces per run, frames recorded).
 Status check_grid_options(const Case& c, const GridOptions& options);
 
 /// Fills `cell`'s schedule summary (latency, bodies, particles: medians over its samples) and judges
