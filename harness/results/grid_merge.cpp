@@ -31,6 +31,7 @@ Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts) {
     if (p.grid.frames != first.grid.frames) return differs("frames");
     if (p.grid.no_skip != first.grid.no_skip) return differs("no_skip");
     if (p.grid.same_seed != first.grid.same_seed) return differs("same_seed");
+    if (p.grid.cell_timeout_s != first.grid.cell_timeout_s) return differs("cell_timeout_s");
     for (const GridCell& c : p.grid.cells) {
       if (!seen.emplace(c.prefracture, c.runtime, c.prefracturer, c.fracturer, c.stress).second)
         return Error{fmt::format("merge: cell {} x {} appears twice (again in {})", c.prefracture, c.runtime, name)};
