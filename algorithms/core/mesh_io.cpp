@@ -22,18 +22,29 @@
 namespace shatter {
 namespace {
 
-/// Largest vertex or face count a header may declare; refused before anything is allocated.
-constexpr std::int64_t max_declared_count = 50'000'000;
-/// Largest non-convex polygon the quadratic ear clipper accepts.
-constexpr std::size_t max_ear_clipping_corners = 2000;
+std::string file_limit_error(const std::filesystem::path& path, std::uint64_t limit) {
+  return path.string() + ": larger than the limit of " + std::to_string(limit) + " bytes per mesh file";
+}
 
-Result<std::string> read_text(const std::filesystem::path& path) {
+/// The whole file, refused when it is larger than `max_bytes`: checked on its size first (nothing is
+/// read then), and again while reading (a pipe or a growing file has no size to trust).
+Result<std::string> read_text(const std::filesystem::path& path, std::uint64_t max_bytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{path.string() + ": cannot open file"};
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (!ec && size > max_bytes)
+    return Error{file_limit_error(path, max_bytes) + " (the file has " + std::to_string(size) + ")"};
+  std::string text;
+  if (!ec) text.reserve(static_cast<std::size_t>(size));
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    const auto n = static_cast<std::size_t>(in.gcount());
+    if (text.size() + n > max_bytes) return Error{file_limit_error(path, max_bytes)};
+    text.append(buffer, n);
+  }
   if (in.bad()) return Error{path.string() + ": read error"};
-  return std::move(buffer).str();
+  return text;
 }
 
 /// Iterates over the non-empty lines of a text, with '#' comments stripped and tokens split.
@@ -131,7 +142,7 @@ bool triangulate_polygon(const std::vector<Vec3>& vertices, std::span<const std:
     for (std::size_t i = 1; i + 1 < m; ++i) out.push_back({poly[0], poly[i], poly[i + 1]});
     return true;
   }
-  if (m > max_ear_clipping_corners) return false;
+  if (static_cast<std::int64_t>(m) > kMaxEarClippingCorners) return false;
 
   std::vector<std::size_t> ring(m);
   for (std::size_t i = 0; i < m; ++i) ring[i] = i;
@@ -197,6 +208,27 @@ std::vector<Vec3> exact_obj_positions(std::string_view text) {
   return positions;
 }
 
+/// Refuses an OBJ text whose `v` statements or whose `f` statements' triangles (k corners make k - 2)
+/// pass the limits, naming the first line past it; run before the text is parsed.
+Status check_obj_counts(std::string_view text, const std::string& file, const MeshReadLimits& limits) {
+  std::int64_t vertices = 0, triangles = 0;
+  TokenLines lines(text);
+  while (lines.next()) {
+    const auto& tokens = lines.tokens();
+    const auto at = [&] { return file + ":" + std::to_string(lines.line()) + ": "; };
+    if (tokens[0] == "v" && ++vertices > limits.max_vertices)
+      return Error{at() + "vertex count exceeds the limit of " + std::to_string(limits.max_vertices) +
+                   " vertices per mesh"};
+    if (tokens[0] == "f" && tokens.size() > 3) {
+      triangles += static_cast<std::int64_t>(tokens.size()) - 3;
+      if (triangles > limits.max_triangles)
+        return Error{at() + "triangle count (after triangulation) exceeds the limit of " +
+                     std::to_string(limits.max_triangles) + " triangles per mesh"};
+    }
+  }
+  return {};
+}
+
 std::string first_line(const std::string& text) {
   std::string line = text.substr(0, text.find('\n'));
   while (!line.empty() && (line.back() == '.' || std::isspace(static_cast<unsigned char>(line.back()))))
@@ -227,8 +259,8 @@ void append_face(std::string& out, const char* prefix, const Triangle& t, int ba
 
 }  // namespace
 
-Result<Mesh> read_off(const std::filesystem::path& path) {
-  Result<std::string> text = read_text(path);
+Result<Mesh> read_off(const std::filesystem::path& path, const MeshReadLimits& limits) {
+  Result<std::string> text = read_text(path, limits.max_file_bytes);
   if (!text) return text.error();
   const std::string file = path.string();
   TokenLines lines(*text);
@@ -250,11 +282,16 @@ Result<Mesh> read_off(const std::filesystem::path& path) {
     const std::optional<std::int64_t> c = parse_integer(header[first + i]);
     if (!c) return fail("non-numeric count '" + std::string(header[first + i]) + "'");
     if (*c < 0) return fail("negative count " + std::to_string(*c));
-    if (*c > max_declared_count)
-      return fail("count " + std::to_string(*c) + " exceeds the limit of " + std::to_string(max_declared_count));
     counts[i] = *c;
   }
   const std::int64_t vertex_count = counts[0], face_count = counts[1];
+  // Before anything is reserved: every face is at least one triangle.
+  if (vertex_count > limits.max_vertices)
+    return fail("vertex count " + std::to_string(vertex_count) + " exceeds the limit of " +
+                std::to_string(limits.max_vertices) + " vertices per mesh");
+  if (face_count > limits.max_triangles)
+    return fail("face count " + std::to_string(face_count) + " exceeds the limit of " +
+                std::to_string(limits.max_triangles) + " triangles per mesh");
 
   // Reserve no more than the file can hold (a vertex line takes at least 6 bytes, a face line 8),
   // so that a small file claiming huge counts fails on truncation without a large allocation.
@@ -295,6 +332,9 @@ Result<Mesh> read_off(const std::filesystem::path& path) {
                     std::to_string(vertex_count) + " vertices)");
       poly.push_back(static_cast<std::int32_t>(*index));
     }
+    if (static_cast<std::int64_t>(mesh.triangles.size()) + *n - 2 > limits.max_triangles)
+      return fail(face + ": triangle count (after triangulation) exceeds the limit of " +
+                  std::to_string(limits.max_triangles) + " triangles per mesh");
     if (!triangulate_polygon(mesh.vertices, poly, mesh.triangles))
       return fail(face + " is a non-convex polygon with too many corners (" + std::to_string(*n) + ")");
   }
@@ -305,10 +345,11 @@ Result<Mesh> read_off(const std::filesystem::path& path) {
   return mesh;
 }
 
-Result<Mesh> read_obj(const std::filesystem::path& path) {
+Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& limits) {
   const std::string file = path.string();
-  Result<std::string> text = read_text(path);
+  Result<std::string> text = read_text(path, limits.max_file_bytes);
   if (!text) return text.error();
+  if (Status s = check_obj_counts(*text, file, limits); !s) return s.error();
   std::istringstream in(*text);
   tinyobj::attrib_t attrib;
   std::vector<tinyobj::shape_t> shapes;
@@ -348,11 +389,11 @@ Result<Mesh> read_obj(const std::filesystem::path& path) {
   return mesh;
 }
 
-Result<Mesh> read_mesh(const std::filesystem::path& path) {
+Result<Mesh> read_mesh(const std::filesystem::path& path, const MeshReadLimits& limits) {
   std::string ext = path.extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == ".off") return read_off(path);
-  if (ext == ".obj") return read_obj(path);
+  if (ext == ".off") return read_off(path, limits);
+  if (ext == ".obj") return read_obj(path, limits);
   return Error{path.string() + ": unknown mesh format '" + ext + "' (expected .off or .obj)"};
 }
 

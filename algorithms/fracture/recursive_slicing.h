@@ -20,11 +20,13 @@
 
 #include "algorithms/core/plane.h"
 #include "algorithms/core/random.h"
+#include "algorithms/core/result.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -91,16 +93,22 @@ std::vector<typename Kernel::Piece> slice_recursively(const Kernel& kernel,
 }
 
 /// Cuts every piece by every plane in turn (explicit pre-fracture cuts): a piece the plane misses is
-/// kept whole.
+/// kept whole. n planes can make far more than n + 1 pieces (a convex solid up to about n^3 / 6), so
+/// the cut stops with an error as soon as there are more than `max_pieces`.
 template <class Kernel>
-std::vector<typename Kernel::Piece> slice_by_planes(const Kernel& kernel,
-                                                    std::vector<typename Kernel::Piece> pieces,
-                                                    std::span<const Plane> planes) {
+Result<std::vector<typename Kernel::Piece>> slice_by_planes(const Kernel& kernel,
+                                                            std::vector<typename Kernel::Piece> pieces,
+                                                            std::span<const Plane> planes, std::size_t max_pieces) {
   using Piece = typename Kernel::Piece;
   order_parts(kernel, pieces);
   std::vector<Piece> below;
   std::vector<Piece> above;
-  for (const Plane& plane : planes) {
+  for (std::size_t k = 0; k < planes.size(); ++k) {
+    const Plane& plane = planes[k];
+    if (pieces.size() > max_pieces)
+      return Error{"the planes cut the solid into more than " + std::to_string(max_pieces) + " pieces (after " +
+                   std::to_string(k) + " of " + std::to_string(planes.size()) +
+                   " planes), which exceeds the limit of " + std::to_string(max_pieces) + " fragments"};
     std::vector<Piece> next;
     next.reserve(pieces.size() * 2);
     for (Piece& piece : pieces) {
@@ -118,6 +126,9 @@ std::vector<typename Kernel::Piece> slice_by_planes(const Kernel& kernel,
     }
     pieces = std::move(next);
   }
+  if (pieces.size() > max_pieces)
+    return Error{"the planes cut the solid into " + std::to_string(pieces.size()) +
+                 " pieces, which exceeds the limit of " + std::to_string(max_pieces) + " fragments"};
   return pieces;
 }
 

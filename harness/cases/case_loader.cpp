@@ -3,6 +3,7 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cases/json_reader.h"
+#include "harness/limits.h"
 
 #include <fmt/format.h>
 
@@ -90,6 +91,9 @@ PrefractureSpec read_prefracture(JsonReader& r, const json& v) {
     const json& planes = v["planes"];
     if (!r.array(planes, "prefracture.planes")) return p;
     if (planes.empty()) r.fail("prefracture.planes", "must list at least one plane");
+    if (planes.size() > static_cast<std::size_t>(kMaxExplicitPlanes))
+      r.fail("prefracture.planes",
+             fmt::format("{} planes exceed the limit of {} planes", planes.size(), kMaxExplicitPlanes));
     for (std::size_t i = 0; i < planes.size() && !r.failed(); ++i) {
       const std::string at = index_path("prefracture.planes", i);
       Plane plane;
@@ -115,6 +119,8 @@ Vec3 unit(const Vec3& v) {
 std::vector<ImpactEvent> read_impacts(JsonReader& r, const json& v, int frames) {
   std::vector<ImpactEvent> impacts;
   if (!r.array(v, "impacts")) return impacts;
+  if (v.size() > static_cast<std::size_t>(kMaxImpacts))
+    r.fail("impacts", fmt::format("{} impacts exceed the limit of {} impacts per case", v.size(), kMaxImpacts));
   for (std::size_t i = 0; i < v.size() && !r.failed(); ++i) {
     const std::string at = index_path("impacts", i);
     const json& item = v[i];
@@ -177,6 +183,16 @@ GridSpec read_grid(JsonReader& r, const json& v) {
   if (!r.object(v, "grid", {"prefracture", "runtime"})) return g;
   read_counts(r, v, "prefracture", g.prefracture);
   read_counts(r, v, "runtime", g.runtime);
+  if (r.failed()) return g;
+  const auto cells = static_cast<std::int64_t>(g.prefracture.size()) * static_cast<std::int64_t>(g.runtime.size());
+  if (cells > kMaxGridCells)
+    r.fail("grid", fmt::format("{} x {} = {} cells exceed the limit of {} cells per grid", g.prefracture.size(),
+                               g.runtime.size(), cells, kMaxGridCells));
+  const std::int64_t p = *std::max_element(g.prefracture.begin(), g.prefracture.end());
+  const std::int64_t q = *std::max_element(g.runtime.begin(), g.runtime.end());
+  if (p * q > kMaxRunPieces)
+    r.fail("grid", fmt::format("cell {} x {} can make {} runtime pieces, which exceeds the limit of {} pieces per run",
+                               p, q, p * q, kMaxRunPieces));
   return g;
 }
 
@@ -233,7 +249,9 @@ DebrisSpec read_debris(JsonReader& r, const json& v) {
   if (!r.object(v, "debris", {"per_area", "per_impact", "speed", "lifetime_frames"})) return d;
   d.enabled = true;
   if (r.read(v, "debris", "per_area", d.per_area)) r.non_negative("debris.per_area", d.per_area);
-  if (r.read(v, "debris", "per_impact", d.per_impact)) r.at_least("debris.per_impact", d.per_impact, 0);
+  if (r.read(v, "debris", "per_impact", d.per_impact))
+    r.at_least("debris.per_impact", d.per_impact, 0) &&
+        r.at_most("debris.per_impact", d.per_impact, kMaxDebrisPerEvent);
   if (r.read(v, "debris", "speed", d.speed)) r.non_negative("debris.speed", d.speed);
   if (r.read(v, "debris", "lifetime_frames", d.lifetime_frames)) r.at_least("debris.lifetime_frames", d.lifetime_frames, 1);
   return d;
@@ -279,7 +297,8 @@ Result<Case> parse_case(std::string_view text, const fs::path& source) {
   r.read(root, "", "gravity", c.gravity);
   if (root.contains("anchors")) c.anchors = read_anchors(r, root["anchors"]);
   if (root.contains("prefracture")) c.prefracture = read_prefracture(r, root["prefracture"]);
-  if (r.read(root, "", "frames", c.frames)) r.at_least("frames", c.frames, 1);
+  if (r.read(root, "", "frames", c.frames))
+    r.at_least("frames", c.frames, 1) && r.at_most("frames", c.frames, kMaxFrames);
   if (root.contains("impacts")) c.impacts = read_impacts(r, root["impacts"], c.frames);
   if (root.contains("runtime")) c.runtime = read_runtime(r, root["runtime"]);
   if (root.contains("stress")) c.stress = read_stress(r, root["stress"]);
@@ -296,6 +315,9 @@ Result<Case> parse_case(std::string_view text, const fs::path& source) {
 Result<Case> load_case(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return Error{fmt::format("{}: case file not found", path.string())};
+  if (const std::uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxCaseFileBytes)
+    return Error{
+        fmt::format("{}: {} bytes exceed the limit of {} bytes per case file", path.string(), size, kMaxCaseFileBytes)};
   std::ifstream in(path, std::ios::binary);
   if (!in) return Error{fmt::format("{}: cannot open the case file", path.string())};
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -1,6 +1,8 @@
 #pragma once
 /// Reading a case file (DESIGN.md section 9, documented key by key in cases/README.md): parse, check
 /// every key, apply the defaults. Never throws; every error is one line naming the file and key path.
+/// Counts past the limits of harness/limits.h (frames, impacts, planes, grid cells, segments, debris)
+/// and a file larger than kMaxCaseFileBytes are errors too.
 
 #include "algorithms/core/result.h"
 #include "harness/cases/case.h"

@@ -3,7 +3,9 @@
 #include "harness/cases/prism_mesh.h"
 
 #include "algorithms/core/mesh_io.h"
+#include "algorithms/core/mesh_limits.h"
 #include "algorithms/core/primitives.h"
+#include "harness/limits.h"
 
 #include <fmt/format.h>
 
@@ -18,12 +20,19 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
-/// Reads `segments`-like counts: an integer in [min, max_primitive_segments].
+/// Reads `segments`-like counts: an integer in [min, kMaxPrimitiveSegments].
 void read_count(JsonReader& r, const json& obj, std::string_view path, std::string_view key, int min, int& out) {
   if (r.read(obj, path, key, out)) {
     const std::string at = key_path(path, key);
-    r.at_least(at, out, min) && r.at_most(at, out, max_primitive_segments);
+    r.at_least(at, out, min) && r.at_most(at, out, kMaxPrimitiveSegments);
   }
+}
+
+/// Refuses a primitive whose two counts make more than kMaxMeshTriangles triangles.
+void check_triangles(JsonReader& r, std::string_view path, std::string_view counts, std::int64_t triangles) {
+  if (!r.failed() && triangles > kMaxMeshTriangles)
+    r.fail(path, fmt::format("{} make {} triangles, which exceeds the limit of {} triangles per mesh", counts,
+                             triangles, kMaxMeshTriangles));
 }
 
 /// Reads a required length (m, > 0).
@@ -47,6 +56,8 @@ SphereSpec read_sphere(JsonReader& r, const json& v, std::string_view path) {
   r.read(v, path, "center", s.center);
   read_count(r, v, path, "segments", 3, s.segments);
   read_count(r, v, path, "rings", 2, s.rings);
+  check_triangles(r, path, fmt::format("segments x rings = {} x {}", s.segments, s.rings),
+                  2 * std::int64_t{s.segments} * (s.rings - 1));
   return s;
 }
 
@@ -71,6 +82,8 @@ TorusSpec read_torus(JsonReader& r, const json& v, std::string_view path) {
   r.read(v, path, "center", s.center);
   read_count(r, v, path, "major_segments", 3, s.major_segments);
   read_count(r, v, path, "minor_segments", 3, s.minor_segments);
+  check_triangles(r, path, fmt::format("major_segments x minor_segments = {} x {}", s.major_segments, s.minor_segments),
+                  2 * std::int64_t{s.major_segments} * s.minor_segments);
   return s;
 }
 

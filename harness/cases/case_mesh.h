@@ -10,11 +10,9 @@
 
 namespace shatter {
 
-/// Largest `segments` / `rings` a primitive may ask for (a typo must not allocate gigabytes).
-inline constexpr int max_primitive_segments = 4096;
-
 /// Reads the mesh description `value` found at key path `path`. A relative `file` is resolved
-/// against `case_dir` first, then the current directory, and must exist. Errors go to `reader`.
+/// against `case_dir` first, then the current directory, and must exist. Errors go to `reader`; a
+/// primitive past the limits of harness/limits.h (segments, triangles, prism corners) is one.
 MeshSpec read_mesh_spec(JsonReader& reader, const nlohmann::json& value, std::string_view path,
                         const std::filesystem::path& case_dir);
 

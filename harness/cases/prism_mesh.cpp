@@ -1,6 +1,7 @@
 #include "harness/cases/prism_mesh.h"
 
 #include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "harness/limits.h"
 
 #include <fmt/core.h>
 
@@ -55,13 +56,20 @@ PrismSpec read_prism(JsonReader& r, const json& v, std::string_view path) {
     return s;
   }
   if (!read_polygon(r, v.at("outline"), outline_at, s.outline)) return s;
+  std::size_t corners = s.outline.size();
   if (v.contains("holes")) {
     const std::string holes_at = fmt::format("{}.holes", path);
     if (!r.array(v.at("holes"), holes_at)) return s;
     for (std::size_t i = 0; i < v.at("holes").size(); ++i) {
       s.holes.emplace_back();
       if (!read_polygon(r, v.at("holes")[i], fmt::format("{}[{}]", holes_at, i), s.holes.back())) return s;
+      corners += s.holes.back().size();
     }
+  }
+  if (corners > static_cast<std::size_t>(kMaxPrismCorners)) {
+    r.fail(path, fmt::format("{} corners (outline and holes) exceed the limit of {} corners per prism", corners,
+                             kMaxPrismCorners));
+    return s;
   }
   if (r.read(v, path, "depth", s.depth)) r.positive(fmt::format("{}.depth", path), s.depth);
   r.read(v, path, "y", s.y);

@@ -1,4 +1,5 @@
 #include "algorithms/fracture/fracture_limits.h"
+#include "harness/limits.h"
 #include "algorithms/fracture/fem_lite/fem_lite_settings.h"
 #include "algorithms/register_all.h"
 #include "harness/accuracy/accuracy_output.h"
@@ -125,8 +126,9 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
       "accuracy", "Time every fracturer and stress model over its knobs against its error; mark the Pareto front");
   cmd->add_option("--case", o->cases, "Case files or built-in names (default: elephant wall cantilever column fixed-beam)");
   cmd->add_option("--json", o->json, "Write the accuracy results JSON here (docs/results.md)");
-  cmd->add_option("--repetitions", o->repetitions, "Timed runs per fracture point (stress points: 10 x); the median is reported")
-      ->check(CLI::Range(1, 1000))
+  cmd->add_option("--repetitions", o->repetitions,
+                  "Timed runs per fracture point (stress points: 10 x); the median is reported")
+      ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
   cmd->add_option("--family", o->families, "Families to run: fracture, stress (default both)");
   cmd->add_option("--fracturer", o->fracturers, "Fracturers (default: every registered one but cgal-clip)");

@@ -1,4 +1,5 @@
 #include "algorithms/fracture/fracture_limits.h"
+#include "harness/limits.h"
 #include "algorithms/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
@@ -120,7 +121,7 @@ void add_table_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1, kMaxFragments))
       ->capture_default_str();
   cmd->add_option("--repetitions", options->repetitions, "Runs per cell, seeds 1..R; the median time is shown")
-      ->check(CLI::Range(1, 1000))
+      ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
   cmd->callback([options, &exit_code] { exit_code = run_table(*options); });
 }

@@ -186,6 +186,12 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
     }
     const GridCell& n = *it->second;
     const std::string name = cell_name(b);
+    if (!b.failed.empty() || !n.failed.empty()) {  // a timed-out or crashed cell has nothing to compare
+      out.mismatches.push_back(fmt::format("cell {} failed in {}: {}", name,
+                                           (!b.failed.empty() ? base : next).path.string(),
+                                           !b.failed.empty() ? b.failed : n.failed));
+      continue;
+    }
     if (o.metric == "instructions") {
       if (!has_instructions(b) || !has_instructions(n)) {
         out.mismatches.push_back(fmt::format("cell {}: no instruction counts (run grid --metric instructions)", name));

@@ -1,20 +1,69 @@
 #include "harness/grid/grid_runner.h"
 
+#include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/register_all.h"
 #include "harness/grid/calibration.h"
+#include "harness/grid/isolated_cell.h"
+#include "harness/limits.h"
 #include "harness/pipeline/instruction_marks.h"
+
+#include <fmt/core.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 
 namespace shatter {
 namespace {
 
 Status check_counts(const std::vector<int>& counts, const std::string& what) {
   if (counts.empty()) return Error{what + ": at least one count is needed"};
-  for (const int n : counts)
+  for (const int n : counts) {
     if (n < 1) return Error{what + ": counts must be >= 1, got " + std::to_string(n)};
+    if (n > kMaxFragments)
+      return Error{what + ": counts must be <= " + std::to_string(kMaxFragments) + " (the fragment limit), got " +
+                   std::to_string(n)};
+  }
+  return {};
+}
+
+/// The pre-fracture counts a grid runs: the flag's, else the case's; explicit planes make one.
+std::vector<int> prefracture_counts(const Case& c, const GridOptions& o) {
+  if (c.prefracture.explicit_planes()) return {static_cast<int>(c.prefracture.planes.size()) + 1};
+  return o.prefracture.empty() ? c.grid.prefracture : o.prefracture;
+}
+
+/// The runtime counts a grid runs: the flag's, else the case's.
+const std::vector<int>& runtime_counts(const Case& c, const GridOptions& o) {
+  return o.runtime.empty() ? c.grid.runtime : o.runtime;
+}
+
+/// The limits of harness/limits.h on the grid as a whole, once every value is known to be in range.
+Status check_grid_limits(const Case& c, const GridOptions& o) {
+  const std::vector<int> prefracture = prefracture_counts(c, o);
+  const std::vector<int>& runtime = runtime_counts(c, o);
+  const std::string axes = std::string(o.prefracture.empty() ? "grid.prefracture" : "--prefracture") + " x " +
+                           (o.runtime.empty() ? "grid.runtime" : "--runtime");
+  const auto cells = static_cast<std::int64_t>(prefracture.size()) * static_cast<std::int64_t>(runtime.size());
+  if (cells > kMaxGridCells)
+    return Error{fmt::format("{}: {} x {} = {} cells exceed the limit of {} cells per grid", axes, prefracture.size(),
+                             runtime.size(), cells, kMaxGridCells)};
+  const std::int64_t p = *std::max_element(prefracture.begin(), prefracture.end());
+  const std::int64_t r = *std::max_element(runtime.begin(), runtime.end());
+  if (p * r > kMaxRunPieces)
+    return Error{
+        fmt::format("{}: cell {} x {} can make {} runtime pieces, which exceeds the limit of {} pieces per run", axes,
+                    p, r, p * r, kMaxRunPieces)};
+  std::int64_t cells_here = 0;
+  for (std::int64_t i = 0; i < cells; ++i) cells_here += i % o.shard_count == o.shard_index ? 1 : 0;
+  const std::int64_t frames = o.frames > 0 ? o.frames : c.frames;
+  const std::int64_t recorded = cells_here * o.repetitions * frames;
+  if (recorded > kMaxRecordedFrames)
+    return Error{
+        fmt::format("--frames x --repetitions x cells: {} x {} x {} = {} frames recorded exceed the limit of {} "
+                    "per grid (fewer frames, repetitions or cells, or --shard, bring it under)",
+                    frames, o.repetitions, cells_here, recorded, kMaxRecordedFrames)};
   return {};
 }
 
@@ -166,7 +215,7 @@ void add_cell_error(CellError& into, const CellError& other) {
 
 bool GridResult::passed() const {
   return std::all_of(cells.begin(), cells.end(),
-                     [](const GridCell& c) { return c.within_budget && c.within_latency_budget; });
+                     [](const GridCell& c) { return c.failed.empty() && c.within_budget && c.within_latency_budget; });
 }
 
 Status check_grid_options(const Case& c, const GridOptions& o) {
@@ -190,7 +239,14 @@ Status check_grid_options(const Case& c, const GridOptions& o) {
   if (!std::isfinite(o.latency_budget_ms) || !(o.latency_budget_ms > 0.0))
     return Error{"--latency-budget-ms: must be a finite number > 0, got " + std::to_string(o.latency_budget_ms)};
   if (o.repetitions < 1) return Error{"--repetitions: must be >= 1, got " + std::to_string(o.repetitions)};
+  if (o.repetitions > kMaxRepetitions)
+    return Error{
+        fmt::format("--repetitions: must be <= {} (the limit per cell), got {}", kMaxRepetitions, o.repetitions)};
   if (o.frames < 0) return Error{"--frames: must be >= 1, got " + std::to_string(o.frames)};
+  if (o.frames > kMaxFrames)
+    return Error{fmt::format("--frames: must be <= {} (the limit per run), got {}", kMaxFrames, o.frames)};
+  if (!std::isfinite(o.cell_timeout_s) || o.cell_timeout_s < 0.0)
+    return Error{fmt::format("--timeout: must be a finite number of seconds > 0, got {}", o.cell_timeout_s)};
   if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     return Error{"--shard: K/N needs N >= 1 and 0 <= K < N, got " + std::to_string(o.shard_index) + "/" +
@@ -199,7 +255,53 @@ Status check_grid_options(const Case& c, const GridOptions& o) {
     if (Status s = check_counts(o.prefracture, "--prefracture"); !s) return s;
   if (!o.runtime.empty())
     if (Status s = check_counts(o.runtime, "--runtime"); !s) return s;
-  return {};
+  return check_grid_limits(c, o);
+}
+
+GridCell grid_cell_settings(const Case& c, const GridOptions& o, int p, int r) {
+  GridCell cell;
+  cell.prefracture = p;
+  cell.runtime = r;
+  cell.prefracturer = c.prefracture.explicit_planes() ? "planes"
+                      : o.fracturer.empty()           ? c.prefracture.fracturer
+                                                      : o.fracturer;
+  cell.fracturer = o.fracturer.empty() ? c.runtime.fracturer : o.fracturer;
+  cell.stress = o.stress_model.empty() ? c.stress.model : o.stress_model;
+  cell.schedule = std::string(schedule_mode_name(o.schedule.value_or(c.schedule.mode)));
+  return cell;
+}
+
+Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, int p, int r, int& done, int total) {
+  const Case& c = prepared.spec;
+  GridCell cell = grid_cell_settings(c, o, p, r);
+  const double budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
+  for (int rep = 0; rep < o.repetitions; ++rep) {
+    RunOptions run;
+    run.prefracture_fragments = p;
+    run.runtime_fragments = r;
+    if (!o.fracturer.empty()) {
+      run.prefracture_fracturer = o.fracturer;
+      run.runtime_fracturer = o.fracturer;
+    }
+    run.stress_model = o.stress_model;
+    run.repetition = o.same_seed ? 0 : static_cast<std::uint64_t>(rep);
+    run.frames = o.frames > 0 ? o.frames : c.frames;
+    run.no_skip = o.no_skip;
+    run.cache = o.cache;
+    run.partition_samples = o.partition_samples;
+    run.schedule = o.schedule.value_or(c.schedule.mode);
+    instruction_marks::set_run(p, r, rep);
+    const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
+    Result<RunResult> result = run_destruction(prepared, run);
+    if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
+    cell.samples.push_back(sample_of(*result));
+    if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
+    add_error(cell.error, *result, rep == 0);
+    merge_stages(cell, *result);
+    if (o.progress) o.progress(++done, total);
+  }
+  summarise_cell(cell, budget_ms, o.latency_budget_ms);
+  return cell;
 }
 
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) {
@@ -207,20 +309,19 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
   if (Status s = check_grid_options(c, o); !s) return s.error();
   const auto start = std::chrono::steady_clock::now();
   // An explicit-plane pre-fracture has one fragment count: the grid's pre-fracture axis collapses to it.
-  std::vector<int> prefracture = o.prefracture.empty() ? c.grid.prefracture : o.prefracture;
-  if (c.prefracture.explicit_planes()) prefracture = {static_cast<int>(c.prefracture.planes.size()) + 1};
-  const std::vector<int>& runtime = o.runtime.empty() ? c.grid.runtime : o.runtime;
+  const std::vector<int> prefracture = prefracture_counts(c, o);
+  const std::vector<int>& runtime = runtime_counts(c, o);
 
   GridResult out;
   out.budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
   out.latency_budget_ms = o.latency_budget_ms;
-  const ScheduleMode schedule = o.schedule.value_or(c.schedule.mode);
   out.repetitions = o.repetitions;
   out.frames = o.frames > 0 ? o.frames : c.frames;
   out.no_skip = o.no_skip;
   out.same_seed = o.same_seed;
   out.shard_index = o.shard_index;
   out.shard_count = o.shard_count;
+  out.cell_timeout_s = o.cell_timeout_s;
   int cells_here = 0;
   for (std::size_t i = 0; i < prefracture.size() * runtime.size(); ++i)
     cells_here += static_cast<int>(i % static_cast<std::size_t>(o.shard_count)) == o.shard_index ? 1 : 0;
@@ -230,42 +331,19 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
   for (const int p : prefracture) {
     for (const int r : runtime) {
       if (static_cast<int>(cell_index++ % static_cast<std::size_t>(o.shard_count)) != o.shard_index) continue;
-      GridCell cell;
-      cell.prefracture = p;
-      cell.runtime = r;
-      cell.prefracturer = c.prefracture.explicit_planes() ? "planes"
-                          : o.fracturer.empty()           ? c.prefracture.fracturer
-                                                          : o.fracturer;
-      cell.fracturer = o.fracturer.empty() ? c.runtime.fracturer : o.fracturer;
-      cell.stress = o.stress_model.empty() ? c.stress.model : o.stress_model;
-      cell.schedule = std::string(schedule_mode_name(schedule));
-      for (int rep = 0; rep < o.repetitions; ++rep) {
-        RunOptions run;
-        run.prefracture_fragments = p;
-        run.runtime_fragments = r;
-        if (!o.fracturer.empty()) {
-          run.prefracture_fracturer = o.fracturer;
-          run.runtime_fracturer = o.fracturer;
-        }
-        run.stress_model = o.stress_model;
-        run.repetition = o.same_seed ? 0 : static_cast<std::uint64_t>(rep);
-        run.frames = out.frames;
-        run.no_skip = o.no_skip;
-        run.cache = o.cache;
-        run.partition_samples = o.partition_samples;
-        run.schedule = schedule;
-        instruction_marks::set_run(p, r, rep);
-        const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
-        Result<RunResult> result = run_destruction(prepared, run);
-        if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
-        cell.samples.push_back(sample_of(*result));
-        if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
-        add_error(cell.error, *result, rep == 0);
-        merge_stages(cell, *result);
-        if (o.progress) o.progress(++done, total);
+      Result<GridCell> cell = Error{""};
+      if (o.cell_timeout_s > 0.0) {
+        // The child runs and times the cell; its progress calls count on from `done` in its own copy.
+        const int before = done;
+        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, p, r, done, total); },
+                                 grid_cell_settings(c, o, p, r), o.cell_timeout_s, o.latency_budget_ms);
+        done = before + o.repetitions;
+        if (o.progress) o.progress(done, total);
+      } else {
+        cell = run_grid_cell(prepared, o, p, r, done, total);
       }
-      summarise_cell(cell, out.budget_ms, out.latency_budget_ms);
-      out.cells.push_back(std::move(cell));
+      if (!cell) return cell.error();
+      out.cells.push_back(std::move(*cell));
     }
   }
   out.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

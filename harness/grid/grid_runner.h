@@ -39,6 +39,10 @@ struct GridOptions {
   bool count_instructions = false;     ///< mark stage boundaries for the instruction counter (callgrind)
   std::optional<ScheduleMode> schedule;  ///< schedule mode of every run (none: the case's schedule.mode)
   double latency_budget_ms = 50.0;     ///< gate on each cell's latency_ms (trigger to visible), ms, > 0
+  /// Wall-time limit per cell, s (0: none, every cell runs in this process). With a limit every cell
+  /// runs in a forked child (isolated_cell.h): a cell past it, or one that crashes, becomes a failed
+  /// cell and the grid goes on with the next one.
+  double cell_timeout_s = 0.0;
   /// Called after each run with (runs done, runs in all); may be empty.
   std::function<void(int, int)> progress;
 };
@@ -127,6 +131,9 @@ struct GridCell {
   double particles_peak = 0.0;         ///< median over repetitions of particles_peak
   double largest_step_ms = 0.0;        ///< largest event step over repetitions
   bool within_latency_budget = true;   ///< latency_ms <= latency budget
+  /// Why the cell has no results ("timeout after 2 s", "crashed: signal 11 (Segmentation fault)"),
+  /// empty when it ran. A failed cell has no samples and is neither within budget nor within latency.
+  std::string failed;
 };
 
 /// A whole grid.
@@ -142,14 +149,26 @@ struct GridResult {
   std::string metric = "time";         ///< "time", or "instructions" when samples carry instruction counts
   int shard_index = 0;                 ///< which shard this is (see GridOptions)
   int shard_count = 1;                 ///< of how many
+  double cell_timeout_s = 0.0;         ///< wall-time limit per cell, s (0: none)
 
-  /// True when every cell is within the frame budget and the latency budget.
+  /// True when every cell ran and is within the frame budget and the latency budget.
   [[nodiscard]] bool passed() const;
 };
 
 /// Checks `options` against `c` before anything runs: algorithm names exist (errors name the flag or
-/// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1.
+/// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1, the cell timeout
+/// finite and >= 0, and the limits of harness/limits.h (repetitions, frames, fragment counts, cells,
+/// pieces per run, frames recorded).
 Status check_grid_options(const Case& c, const GridOptions& options);
+
+/// The cell `p` x `r` of a grid with `options`, its settings filled in and nothing run: what a cell
+/// that failed reports.
+GridCell grid_cell_settings(const Case& c, const GridOptions& options, int p, int r);
+
+/// Runs one cell of the grid, every repetition in this process. `done` counts the runs finished (for
+/// `options.progress`, out of `total`).
+Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& options, int p, int r, int& done,
+                               int total);
 
 /// Fills `cell`'s schedule summary (latency, bodies, particles: medians over its samples) and judges
 /// its latency against `latency_budget_ms`.

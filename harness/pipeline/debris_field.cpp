@@ -1,6 +1,7 @@
 #include "harness/pipeline/debris_field.h"
 
 #include "algorithms/core/mass_properties.h"
+#include "harness/limits.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,10 +13,13 @@ DebrisField::DebrisField(const DebrisSpec& spec, const Vec3& gravity, double gro
     : spec_(spec), gravity_(gravity), ground_z_(ground_z) {}
 
 int DebrisField::count_for(double cut_area_m2) const {
-  return static_cast<int>(std::lround(spec_.per_area * std::max(0.0, cut_area_m2))) + spec_.per_impact;
+  // Clamped in double before the conversion: per_area x area has no bound of its own.
+  const double n = std::round(spec_.per_area * std::max(0.0, cut_area_m2)) + spec_.per_impact;
+  return static_cast<int>(std::min(n, static_cast<double>(kMaxDebrisPerEvent)));
 }
 
 int DebrisField::spawn(int count, const std::vector<Vec3>& origins, std::uint64_t seed) {
+  count = std::min(count, kMaxDebrisParticles - size());
   if (count <= 0 || origins.empty()) return 0;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> unit(0.0, 1.0);

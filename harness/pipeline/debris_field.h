@@ -23,10 +23,11 @@ class DebrisField {
   /// A field for `spec`, with `gravity` (m/s^2) and a ground plane at z = `ground_z` (m).
   DebrisField(const DebrisSpec& spec, const Vec3& gravity, double ground_z);
 
-  /// Particles one event spawns: round(per_area * cut_area_m2) + per_impact.
+  /// Particles one event spawns: round(per_area * cut_area_m2) + per_impact, at most kMaxDebrisPerEvent.
   [[nodiscard]] int count_for(double cut_area_m2) const;
   /// Spawns `count` particles at `origins` (taken round robin; non-empty), each with the case's speed in
-  /// a direction drawn from `seed` (the upper hemisphere about +z). Returns the count spawned.
+  /// a direction drawn from `seed` (the upper hemisphere about +z), no more than keep the field within
+  /// kMaxDebrisParticles. Returns the count spawned.
   int spawn(int count, const std::vector<Vec3>& origins, std::uint64_t seed);
   /// One frame of `dt` s: every particle ages by one frame and moves (semi-implicit Euler; at the
   /// ground it stops falling and slides with friction); a particle that has lived lifetime_frames

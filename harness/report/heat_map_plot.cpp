@@ -22,15 +22,23 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
     return static_cast<int>(std::lower_bound(v.begin(), v.end(), x) - v.begin());
   };
   double largest = 0.0;
-  for (const ReportCell& c : grid.cells) largest = std::max(largest, c.worst_frame_ms);
+  for (const ReportCell& c : grid.cells)
+    if (c.failed.empty()) largest = std::max(largest, c.worst_frame_ms);
   const double b = grid.budget_ms;
   const double top = std::max(1.5 * b, largest);
 
-  // x y value "label" over; a cell missing from the file stays blank (NaN).
+  // x y value "label" over (0 within, 1 over, 2 failed); a cell missing from the file stays blank.
   std::string data = "# runtime_index prefracture_index worst_frame_ms label over_budget\n";
   std::string frames;
   for (const ReportCell& c : grid.cells) {
     const int x = index(columns, c.runtime), y = index(rows, c.prefracture);
+    if (!c.failed.empty()) {  // no figure: a blank box, framed, labelled "failed"
+      data += fmt::format("{} {} NaN \"failed\" 2\n", x, y);
+      frames +=
+          fmt::format("set object rect from {}, {} to {}, {} front fillstyle empty border lc rgb \"black\" lw 3\n",
+                      x - 0.5, y - 0.5, x + 0.5, y + 0.5);
+      continue;
+    }
     const std::string label = c.within_budget ? fmt::format("{:.2f}", c.worst_frame_ms)
                                               : fmt::format("{:.2f} !", c.worst_frame_ms);
     data += fmt::format("{} {} {:.6g} \"{}\" {}\n", x, y, c.worst_frame_ms, label, c.within_budget ? 0 : 1);
@@ -41,8 +49,12 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
   std::string xtics, ytics;
   for (std::size_t i = 0; i < columns.size(); ++i) xtics += fmt::format("{}\"{}\" {}", i ? ", " : "", columns[i], i);
   for (std::size_t i = 0; i < rows.size(); ++i) ytics += fmt::format("{}\"{}\" {}", i ? ", " : "", rows[i], i);
-  int over = 0;
-  for (const ReportCell& c : grid.cells) over += c.within_budget ? 0 : 1;
+  int over = 0, failed = 0;
+  for (const ReportCell& c : grid.cells) {
+    over += c.failed.empty() && !c.within_budget ? 1 : 0;
+    failed += c.failed.empty() ? 0 : 1;
+  }
+  const std::string failed_note = failed > 0 ? fmt::format(", {} failed (blank, framed)", failed) : std::string();
 
   const int width = std::max(640, 110 * static_cast<int>(columns.size()) + 260);
   const int height = std::max(420, 48 * static_cast<int>(rows.size()) + 170);
@@ -50,8 +62,9 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
   std::string script;
   script += fmt::format("set terminal pngcairo noenhanced size {},{} font \"Sans,10\"\n", width, height);
   script += fmt::format("set output \"{}\"\n", image);
-  script += fmt::format("set title \"{}: worst frame per cell (ms), budget {:g} ms\\n{} of {} cells over the budget (red, framed, !)\"\n",
-                        gnuplot_quote(grid.case_name), b, over, grid.cells.size());
+  script += fmt::format(
+      "set title \"{}: worst frame per cell (ms), budget {:g} ms\\n{} of {} cells over the budget (red, framed, !){}\"\n",
+      gnuplot_quote(grid.case_name), b, over, grid.cells.size(), failed_note);
   script += "set xlabel \"runtime fragments\"\nset ylabel \"pre-fracture fragments\"\n";
   script += fmt::format("set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n", columns.size() - 0.5, rows.size() - 0.5);
   script += fmt::format("set xtics ({}) scale 0\nset ytics ({}) scale 0\n", xtics, ytics);
@@ -65,7 +78,8 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
   script += fmt::format(
       "plot \"{0}.dat\" using 1:2:(0.5):(0.5):3 with boxxyerror fillstyle solid 1.0 noborder lc palette, \\\n"
       "     \"{0}.dat\" using 1:2:($5 == 0 ? stringcolumn(4) : \"\") with labels font \"Sans,10\" tc rgb \"black\", \\\n"
-      "     \"{0}.dat\" using 1:2:($5 == 1 ? stringcolumn(4) : \"\") with labels font \"Sans Bold,10\" tc rgb \"white\"\n",
+      "     \"{0}.dat\" using 1:2:($5 == 1 ? stringcolumn(4) : \"\") with labels font \"Sans Bold,10\" tc rgb \"white\", \\\n"
+      "     \"{0}.dat\" using 1:2:($5 == 2 ? stringcolumn(4) : \"\") with labels font \"Sans Bold,10\" tc rgb \"black\"\n",
       stem);
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();

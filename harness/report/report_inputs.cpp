@@ -89,6 +89,12 @@ ReportGrid read_grid(const Json& j, const std::string& file) {
     ReportCell cell;
     cell.prefracture = integer(c, "prefracture", path);
     cell.runtime = integer(c, "runtime", path);
+    if (c.contains("failed")) {  // timed out or crashed: no figures
+      cell.failed = text(c, "failed", path);
+      cell.within_budget = false;
+      g.cells.push_back(std::move(cell));
+      continue;
+    }
     cell.worst_frame_ms = number(c, "worst_frame_ms", path);
     cell.within_budget = boolean(c, "within_budget", path);
     cell.stages_ms = stages(c, "stages_ms", path);

@@ -25,6 +25,7 @@ struct ReportCell {
   bool within_budget = true;  ///< worst_frame_ms <= budget_ms
   StageTimes stages_ms;       ///< median per stage, summed over the frames, ms
   std::vector<StageTimes> sample_stages_ms;  ///< the same per repetition (empty when the file has no samples)
+  std::string failed;                        ///< why the cell has no figures (`grid --timeout`); empty when it ran
 };
 
 /// One grid results file.

@@ -12,10 +12,14 @@ namespace {
 std::string grid_section(const GridFigures& g) {
   const ReportGrid& grid = *g.grid;
   std::string out;
-  int over = 0;
-  for (const ReportCell& c : grid.cells) over += c.within_budget ? 0 : 1;
-  out += fmt::format("## Frame budget: {}\n\nSource: `{}`. Budget {:g} ms per frame; {} of {} cells over it.\n\n",
-                     grid.case_name, grid.file, grid.budget_ms, over, grid.cells.size());
+  int over = 0, failed = 0;
+  for (const ReportCell& c : grid.cells) {
+    over += c.failed.empty() && !c.within_budget ? 1 : 0;
+    failed += c.failed.empty() ? 0 : 1;
+  }
+  out += fmt::format("## Frame budget: {}\n\nSource: `{}`. Budget {:g} ms per frame; {} of {} cells over it{}.\n\n",
+                     grid.case_name, grid.file, grid.budget_ms, over, grid.cells.size(),
+                     failed > 0 ? fmt::format(", {} failed (`grid --timeout`)", failed) : std::string());
   out += fmt::format("![worst frame per cell against the budget]({})\n\n", g.heat_map);
 
   std::set<int> row_set, column_set;
@@ -35,7 +39,9 @@ std::string grid_section(const GridFigures& g) {
       std::string text = " |";
       for (const ReportCell& c : grid.cells)
         if (c.prefracture == p && c.runtime == r)
-          text = c.within_budget ? fmt::format(" {:.2f} |", c.worst_frame_ms) : fmt::format(" **{:.2f} !** |", c.worst_frame_ms);
+          text = !c.failed.empty() ? fmt::format(" **{} !** |", c.failed)
+                 : c.within_budget ? fmt::format(" {:.2f} |", c.worst_frame_ms)
+                                   : fmt::format(" **{:.2f} !** |", c.worst_frame_ms);
       out += text;
     }
     out += "\n";

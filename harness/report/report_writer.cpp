@@ -31,12 +31,20 @@ std::string stem_part(const std::string& name, std::set<std::string>& used) {
 Result<const ReportCell*> pick_cell(const ReportGrid& grid, const ChosenCell& chosen) {
   if (chosen) {
     for (const ReportCell& c : grid.cells)
-      if (c.prefracture == chosen->first && c.runtime == chosen->second) return &c;
+      if (c.prefracture == chosen->first && c.runtime == chosen->second) {
+        if (!c.failed.empty())
+          return Error{fmt::format("--cell: cell {} x {} in {} failed ({}): it has no stage times", c.prefracture,
+                                   c.runtime, grid.file, c.failed)};
+        return &c;
+      }
     return Error{fmt::format("--cell: no cell {} x {} in {}", chosen->first, chosen->second, grid.file)};
   }
-  const ReportCell* best = &grid.cells.front();
+  const ReportCell* best = nullptr;  // the largest cell that ran
   for (const ReportCell& c : grid.cells)
-    if (std::pair(c.prefracture, c.runtime) > std::pair(best->prefracture, best->runtime)) best = &c;
+    if (c.failed.empty() &&
+        (best == nullptr || std::pair(c.prefracture, c.runtime) > std::pair(best->prefracture, best->runtime)))
+      best = &c;
+  if (best == nullptr) return Error{fmt::format("{}: every cell failed: no stage times to show", grid.file)};
   return best;
 }
 

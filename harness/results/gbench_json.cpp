@@ -46,6 +46,23 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
   };
   for (const GridCell& c : grid.cells) {
     const std::string prefix = fmt::format("{}/{}x{}/", case_name, c.prefracture, c.runtime);
+    if (!c.failed.empty()) {  // Google Benchmark's form of a benchmark that could not run
+      benchmarks.push_back({{"name", prefix + "worst_frame"},
+                            {"family_index", family++},
+                            {"per_family_instance_index", 0},
+                            {"run_name", prefix + "worst_frame"},
+                            {"run_type", "iteration"},
+                            {"repetitions", grid.repetitions},
+                            {"repetition_index", 0},
+                            {"threads", 1},
+                            {"iterations", 0},
+                            {"real_time", 0},
+                            {"cpu_time", 0},
+                            {"time_unit", "ms"},
+                            {"error_occurred", true},
+                            {"error_message", c.failed}});
+      continue;
+    }
     std::vector<double> worst;
     for (const GridSample& s : c.samples) worst.push_back(s.worst_frame_ms);
     add(prefix + "worst_frame", worst);

@@ -7,7 +7,9 @@
 /// `<case>/<prefracture>x<runtime>/<stage>` (stage time inside frames), with `run_type` "iteration",
 /// `repetitions`, `repetition_index`, `iterations` = frames, `real_time` = `cpu_time` = the figure in ms,
 /// `time_unit` "ms"; plus one `run_type` "aggregate" entry per cell and figure with `aggregate_name`
-/// "median". The context holds Google Benchmark's keys (`date`, `host_name`, `executable`, `num_cpus`,
+/// "median". A failed cell (`grid --timeout`) is one `worst_frame` entry with `error_occurred` true and
+/// `error_message` its reason, as Google Benchmark writes a benchmark that skipped with an error. The
+/// context holds Google Benchmark's keys (`date`, `host_name`, `executable`, `num_cpus`,
 /// `mhz_per_cpu`, `cpu_scaling_enabled`, `caches`, `library_build_type`) and shatterbench's own context.
 
 #include "harness/grid/grid_runner.h"

@@ -39,6 +39,7 @@ Result<StoredGrid> join_repetitions(const std::vector<StoredGrid>& parts, Stored
       if (c.schedule != into.schedule)
         return Error{fmt::format("merge: {} differs from {} in the schedule of cell {}", p.path.string(),
                                  parts.front().path.string(), cell_name(c))};
+      if (!c.failed.empty() && into.failed.empty()) into.failed = c.failed;  // failed in one run: failed
       into.samples.insert(into.samples.end(), c.samples.begin(), c.samples.end());
       add_cell_error(into.error, c.error);
       for (const std::string& stage : c.stages_run)
@@ -52,7 +53,22 @@ Result<StoredGrid> join_repetitions(const std::vector<StoredGrid>& parts, Stored
     out.grid.repetitions += p.grid.repetitions;
     out.grid.wall_s += p.grid.wall_s;
   }
-  for (GridCell& c : out.grid.cells) summarise_cell(c, out.grid.budget_ms, out.grid.latency_budget_ms);
+  for (GridCell& c : out.grid.cells) {
+    if (c.failed.empty()) {
+      summarise_cell(c, out.grid.budget_ms, out.grid.latency_budget_ms);
+    } else {  // as a failed cell reports: its settings and the reason, no samples
+      GridCell bare;
+      bare.prefracture = c.prefracture;
+      bare.runtime = c.runtime;
+      bare.prefracturer = c.prefracturer;
+      bare.fracturer = c.fracturer;
+      bare.stress = c.stress;
+      bare.schedule = c.schedule;
+      bare.failed = c.failed;
+      bare.within_budget = bare.within_latency_budget = false;
+      c = std::move(bare);
+    }
+  }
   return out;
 }
 
@@ -82,6 +98,7 @@ Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts, MergeParts 
     if (p.grid.frames != first.grid.frames) return differs("frames");
     if (p.grid.no_skip != first.grid.no_skip) return differs("no_skip");
     if (p.grid.same_seed != first.grid.same_seed) return differs("same_seed");
+    if (p.grid.cell_timeout_s != first.grid.cell_timeout_s) return differs("cell_timeout_s");
     if (kind == MergeParts::repetitions) continue;
     for (const GridCell& c : p.grid.cells) {
       if (!seen.emplace(c.prefracture, c.runtime, c.prefracturer, c.fracturer, c.stress).second)

@@ -144,6 +144,14 @@ GridCell cell(const Json& j, const std::string& path, double latency_budget_ms) 
   c.prefracturer = text(j, "prefracturer", path);
   c.fracturer = text(j, "fracturer", path);
   c.stress = text(j, "stress", path);
+  if (j.contains("failed")) {  // a cell that timed out or crashed: settings and reason only
+    c.failed = text(j, "failed", path);
+    if (c.failed.empty()) throw BadKey(join(path, "failed") + ": expected the reason the cell failed");
+    if (j.contains("schedule")) c.schedule = text(j, "schedule", path);
+    c.within_budget = false;
+    c.within_latency_budget = false;
+    return c;
+  }
   c.worst_frame_ms = number(j, "worst_frame_ms", path);
   const Json& f = at(j, "frame_ms", path);
   const std::string fp = join(path, "frame_ms");
@@ -198,6 +206,15 @@ GridCell cell(const Json& j, const std::string& path, double latency_budget_ms) 
 
 }  // namespace
 
+Result<GridCell> grid_cell_from_json(const nlohmann::ordered_json& j, const std::string& what,
+                                     double latency_budget_ms) {
+  try {
+    return cell(j, "", latency_budget_ms);
+  } catch (const BadKey& e) {
+    return Error{what + ": " + e.what()};
+  }
+}
+
 Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const std::string& what) {
   try {
     StoredGrid out;
@@ -220,6 +237,7 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
     out.grid.no_skip = boolean(j, "no_skip", "");
     out.grid.same_seed = boolean(j, "same_seed", "");
     out.grid.wall_s = number(j, "wall_s", "");
+    if (j.contains("cell_timeout_s")) out.grid.cell_timeout_s = number(j, "cell_timeout_s", "");
     if (j.contains("shard")) {
       out.grid.shard_index = static_cast<int>(integer(j.at("shard"), "index", "shard"));
       out.grid.shard_count = static_cast<int>(integer(j.at("shard"), "count", "shard"));

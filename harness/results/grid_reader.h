@@ -26,6 +26,11 @@ struct StoredGrid {
 /// array of numbers"), for unreadable files, malformed JSON and an unknown `schema_version`.
 Result<StoredGrid> read_grid_results(const std::filesystem::path& path);
 
+/// Parses one cell object of a results file (grid_cell_to_json); `what` names it in errors, and
+/// `latency_budget_ms` judges a cell whose file predates the latency keys.
+Result<GridCell> grid_cell_from_json(const nlohmann::ordered_json& j, const std::string& what,
+                                     double latency_budget_ms);
+
 /// Parses an already loaded document; `what` names it in errors.
 Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const std::string& what);
 

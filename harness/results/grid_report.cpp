@@ -1,6 +1,7 @@
 #include "harness/results/grid_report.h"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <functional>
@@ -87,7 +88,22 @@ Json sample_json(const GridSample& s) {
   return j;
 }
 
+/// A failed cell keeps its settings and the reason; it has no figures.
+Json failed_cell_json(const GridCell& c) {
+  return {{"prefracture", c.prefracture},
+          {"runtime", c.runtime},
+          {"prefracturer", c.prefracturer},
+          {"fracturer", c.fracturer},
+          {"stress", c.stress},
+          {"schedule", c.schedule},
+          {"failed", c.failed},
+          {"within_budget", false},
+          {"within_latency_budget", false},
+          {"samples", Json::array()}};
+}
+
 Json cell_json(const GridCell& c) {
+  if (!c.failed.empty()) return failed_cell_json(c);
   Json samples = Json::array();
   for (const GridSample& s : c.samples) samples.push_back(sample_json(s));
   Json skipped = Json::array();
@@ -117,7 +133,17 @@ Json cell_json(const GridCell& c) {
           {"samples", samples}};
 }
 
+/// A CSV field: quoted when it holds a comma, a quote or a line break.
+std::string csv_field(const std::string& text) {
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string out = "\"";
+  for (const char ch : text) out += ch == '"' ? std::string("\"\"") : std::string(1, ch);
+  return out + "\"";
+}
+
 }  // namespace
+
+nlohmann::ordered_json grid_cell_to_json(const GridCell& cell) { return cell_json(cell); }
 
 nlohmann::ordered_json case_to_json(const Case& c) {
   Json impacts = Json::array();
@@ -153,6 +179,7 @@ nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::orde
               {"no_skip", grid.no_skip},
               {"same_seed", grid.same_seed}};
   if (grid.shard_count > 1) out["shard"] = {{"index", grid.shard_index}, {"count", grid.shard_count}};
+  if (grid.cell_timeout_s > 0.0) out["cell_timeout_s"] = grid.cell_timeout_s;
   out["passed"] = grid.passed();
   out["wall_s"] = grid.wall_s;
   out["cells"] = cells;
@@ -163,14 +190,21 @@ std::string grid_to_csv(const GridResult& grid) {
   std::string out = "prefracture,runtime,prefracturer,fracturer,stress,worst_frame_ms,mean_ms,median_ms,p95_ms,p99_ms,"
                     "max_ms,min_ms,event_ms";
   for (const Stage s : kAllStages) out += fmt::format(",{}_ms", stage_name(s));
-  out += ",prefracture_volume_error,runtime_volume_error,within_budget,schedule,latency_ms,latency_frames,bodies,"
-         "bodies_peak,particles_peak,within_latency_budget\n";
+  out +=
+      ",prefracture_volume_error,runtime_volume_error,within_budget,schedule,latency_ms,latency_frames,bodies,"
+      "bodies_peak,particles_peak,within_latency_budget,failed\n";
   for (const GridCell& c : grid.cells) {
+    if (!c.failed.empty()) {  // settings, the verdicts and the reason; no figures
+      out += fmt::format("{},{},{},{},{},,,,,,,,", c.prefracture, c.runtime, c.prefracturer, c.fracturer, c.stress);
+      for (std::size_t k = 0; k < kAllStages.size(); ++k) out += ",";
+      out += fmt::format(",,,false,{},,,,,,false,{}\n", c.schedule, csv_field(c.failed));
+      continue;
+    }
     out += fmt::format("{},{},{},{},{},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f},{:.6f}", c.prefracture,
                        c.runtime, c.prefracturer, c.fracturer, c.stress, c.worst_frame_ms, c.frame_ms.mean,
                        c.frame_ms.median, c.frame_ms.p95, c.frame_ms.p99, c.frame_ms.max, c.frame_ms.min, c.event_ms);
     for (const Stage s : kAllStages) out += fmt::format(",{:.6f}", c.stages_ms[static_cast<std::size_t>(s)]);
-    out += fmt::format(",{:.3e},{:.3e},{},{},{:.6f},{:g},{:g},{:g},{:g},{}\n", c.error.prefracture_volume_error,
+    out += fmt::format(",{:.3e},{:.3e},{},{},{:.6f},{:g},{:g},{:g},{:g},{},\n", c.error.prefracture_volume_error,
                        c.error.runtime_volume_error, c.within_budget ? "true" : "false", c.schedule, c.latency_ms,
                        c.latency_frames, c.bodies, c.bodies_peak, c.particles_peak,
                        c.within_latency_budget ? "true" : "false");
@@ -218,6 +252,7 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
                        grid.budget_ms, first.schedule);
   }
   out += cell_table(grid, [](const GridCell& c) {
+    if (!c.failed.empty()) return fmt::format("**{} !**", c.failed);
     return c.within_budget ? fmt::format("{:.2f}", c.worst_frame_ms) : fmt::format("**{:.2f} !**", c.worst_frame_ms);
   });
   if (!grid.cells.empty()) {
@@ -225,25 +260,33 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
                        "particles peak (medians over repetitions)\n\n",
                        grid.latency_budget_ms);
     out += cell_table(grid, [](const GridCell& g) {
+      if (!g.failed.empty()) return std::string("**failed !**");
       return fmt::format("{}{:.1f} ({:g}){} · {:g}/{:g} · {:g}", g.within_latency_budget ? "" : "**", g.latency_ms,
                          g.latency_frames, g.within_latency_budget ? "" : " !**", g.bodies, g.bodies_peak,
                          g.particles_peak);
     });
   }
-  int failed = 0, late = 0;
+  int over = 0, late = 0;
+  std::vector<std::string> failed;
   for (const GridCell& c : grid.cells) {
-    failed += c.within_budget ? 0 : 1;
+    if (!c.failed.empty()) {
+      failed.push_back(fmt::format("cell {} x {}: {}", c.prefracture, c.runtime, c.failed));
+      continue;
+    }
+    over += c.within_budget ? 0 : 1;
     late += c.within_latency_budget ? 0 : 1;
   }
+  if (!failed.empty())
+    out += fmt::format("\n{} of {} cells failed (marked !): {}.\n", failed.size(), grid.cells.size(),
+                       fmt::join(failed, "; "));
   if (late > 0)
     out += fmt::format("\n{} of {} cells over the {} ms latency budget (marked !).\n", late, grid.cells.size(),
                        grid.latency_budget_ms);
-  if (failed == 0) {
+  if (over == 0 && failed.empty()) {
     out += fmt::format("\nAll {} cells within the {} ms budget ({:.1f} s).\n", grid.cells.size(), grid.budget_ms,
                        grid.wall_s);
-  } else {
-    out += fmt::format("\n{} of {} cells over the {} ms budget (marked !).\n", failed, grid.cells.size(),
-                       grid.budget_ms);
+  } else if (over > 0) {
+    out += fmt::format("\n{} of {} cells over the {} ms budget (marked !).\n", over, grid.cells.size(), grid.budget_ms);
   }
   return out;
 }
@@ -253,6 +296,7 @@ std::string grid_instructions_markdown(const GridResult& grid, const std::string
                                 "repetitions of {} frames; counted under callgrind)\n\n",
                                 case_name, grid.repetitions, grid.frames);
   out += cell_table(grid, [](const GridCell& c) {
+    if (!c.failed.empty()) return fmt::format("**{} !**", c.failed);
     std::vector<double> v;
     for (const GridSample& s : c.samples)
       if (s.instructions) v.push_back(s.instructions->worst_frame);

@@ -49,7 +49,7 @@ IsolatedRun run_isolated(const std::function<std::string()>& work, double time_l
     try {
       write_all(fds[1], work());
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "stability: exception: %s\n", e.what());
+      std::fprintf(stderr, "shatterbench: exception in an isolated run: %s\n", e.what());
       code = 3;
     } catch (...) {
       code = 3;

@@ -142,6 +142,53 @@ TEST_CASE("mesh_io: malformed OFF files give errors naming file and line", "[mes
   CHECK_THAT(read_error(temp_file("mesh.stl")), Contains("unknown mesh format"));
 }
 
+TEST_CASE("mesh_io: an OFF header announcing counts past the limits is refused before allocating",
+          "[mesh_io][limits]") {
+  // 30 bytes announcing 4e9 faces or 2e7 vertices: refused at the header, not on truncation.
+  const std::string faces = read_error(write_temp("many_faces.off", "OFF\n4 4000000000 0\n0 0 0\n"));
+  CHECK_THAT(faces, StartsWith(temp_file("many_faces.off").string() + ":2: ") &&
+                        Contains("face count 4000000000 exceeds the limit of 10000000 triangles per mesh"));
+  const std::string vertices = read_error(write_temp("many_vertices.off", "OFF\n20000000 4 0\n0 0 0\n"));
+  CHECK_THAT(vertices, StartsWith(temp_file("many_vertices.off").string() + ":2: ") &&
+                           Contains("vertex count 20000000 exceeds the limit of 10000000 vertices per mesh"));
+  // At the limits the header is accepted, and the short file is then refused as truncated.
+  CHECK_THAT(read_error(write_temp("at_limit.off", "OFF\n10000000 10000000 0\n0 0 0\n")), Contains("truncated file"));
+}
+
+TEST_CASE("mesh_io: triangles after triangulation, vertices and file size are held to the limits",
+          "[mesh_io][limits]") {
+  // A cube of six quads: 8 vertices, 12 triangles, 136 bytes as OFF.
+  const std::string cube_off =
+      "OFF\n8 6 0\n0 0 0\n1 0 0\n0 1 0\n1 1 0\n0 0 1\n1 0 1\n0 1 1\n1 1 1\n"
+      "4 0 2 3 1\n4 4 5 7 6\n4 0 1 5 4\n4 2 6 7 3\n4 0 4 6 2\n4 1 3 7 5\n";
+  const std::filesystem::path off = write_temp("cube_limits.off", cube_off);
+  REQUIRE(read_off(off).ok());
+  CHECK(read_off(off, {.max_triangles = 12}).ok());
+  const Result<Mesh> over = read_off(off, {.max_triangles = 11});
+  REQUIRE_FALSE(over.ok());
+  CHECK_THAT(over.error().message,
+             StartsWith(off.string() + ":16: ") &&
+                 Contains("face 5: triangle count (after triangulation) exceeds the limit of 11"));
+  const Result<Mesh> small = read_off(off, {.max_file_bytes = 100});
+  REQUIRE_FALSE(small.ok());
+  CHECK_THAT(small.error().message, StartsWith(off.string() + ": larger than the limit of 100 bytes per mesh file"));
+
+  const std::filesystem::path obj = write_temp("quads_limits.obj", "v 0 0 0\nv 2 0 0\nv 2 3 0\nv 0 3 0\nf 1 2 3 4\n");
+  REQUIRE(read_obj(obj).ok());
+  CHECK(read_obj(obj, {.max_triangles = 2, .max_vertices = 4}).ok());
+  const Result<Mesh> triangles = read_obj(obj, {.max_triangles = 1});
+  REQUIRE_FALSE(triangles.ok());
+  CHECK_THAT(triangles.error().message, StartsWith(obj.string() + ":5: ") &&
+                                            Contains("triangle count (after triangulation) exceeds the limit of 1"));
+  const Result<Mesh> vertices = read_obj(obj, {.max_vertices = 3});
+  REQUIRE_FALSE(vertices.ok());
+  CHECK_THAT(vertices.error().message,
+             StartsWith(obj.string() + ":4: ") && Contains("vertex count exceeds the limit of 3 vertices per mesh"));
+  const Result<Mesh> bytes = read_mesh(obj, {.max_file_bytes = 10});
+  REQUIRE_FALSE(bytes.ok());
+  CHECK_THAT(bytes.error().message, Contains("larger than the limit of 10 bytes per mesh file"));
+}
+
 TEST_CASE("mesh_io: a NaN coordinate reads, and validation names its vertex", "[mesh_io]") {
   Result<Mesh> mesh = read_off(write_temp("nan.off", "OFF\n4 4 0\n0 0 0\n1 0 0\nnan 1 0\n0 0 inf\n"
                                                      "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n"));

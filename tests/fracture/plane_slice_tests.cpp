@@ -223,3 +223,21 @@ TEST_CASE("plane-slice: a cut within rounding distance of an earlier cut never o
     CHECK_FALSE(slicer.error().empty());
   }
 }
+
+TEST_CASE("plane-slice: explicit planes that make more pieces than the limit are refused", "[plane-slice][limits]") {
+  // Three axis planes through the cube's centre make 8 pieces.
+  const std::vector<Plane> planes = {
+      {Vec3(0.5, 0.5, 0.5), Vec3(1, 0, 0)}, {Vec3(0.5, 0.5, 0.5), Vec3(0, 1, 0)}, {Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 1)}};
+  const Mesh cube = test::make_unit_cube();
+  const auto eight = PlaneSliceFracturer().fracture_by_planes(cube, planes, 8);
+  REQUIRE(eight.ok());
+  CHECK(eight->size() == 8);
+  const auto seven = PlaneSliceFracturer().fracture_by_planes(cube, planes, 7);
+  REQUIRE_FALSE(seven.ok());
+  CHECK_THAT(seven.error().message, Catch::StartsWith("plane-slice: the planes cut the solid into 8 pieces") &&
+                                        Catch::Contains("exceeds the limit of 7 fragments"));
+  // Stopped before the next plane once past the limit: 4 pieces after two planes.
+  const auto three = PlaneSliceFracturer().fracture_by_planes(cube, planes, 3);
+  REQUIRE_FALSE(three.ok());
+  CHECK_THAT(three.error().message, Catch::Contains("more than 3 pieces (after 2 of 3 planes)"));
+}

@@ -9,6 +9,7 @@
 #include "harness/cases/case_mesh.h"
 
 #include <catch2/catch.hpp>
+#include <fmt/core.h>
 
 #include <filesystem>
 #include <fstream>
@@ -205,6 +206,72 @@ TEST_CASE("cases: values out of range are errors naming the key", "[cases]") {
   require_error(R"({"mesh": {"sphere": {"radius": 1, "segments": 2}}})",
                 {": mesh.sphere.segments: must be >= 3, got 2"});
   require_error(R"({"mesh": {"box": {"size": [1, 0, 1]}}})", {": mesh.box.size[1]: must be > 0, got 0"});
+}
+
+TEST_CASE("cases: counts past the documented limits are refused naming the key and the limit", "[cases][limits]") {
+  require_error("{" + box_mesh + R"(, "frames": 100001})", {": frames: must be <= 100000, got 100001"});
+  REQUIRE(parse("{" + box_mesh + R"(, "frames": 100000})").ok());
+  require_error(R"({"mesh": {"sphere": {"radius": 1, "segments": 5000}}})",
+                {": mesh.sphere.segments: must be <= 4096, got 5000"});
+  require_error(R"({"mesh": {"sphere": {"radius": 1, "segments": 4096, "rings": 4096}}})",
+                {": mesh.sphere: segments x rings = 4096 x 4096 make 33546240 triangles, which exceeds the limit of "
+                 "10000000 triangles per mesh"});
+  require_error(
+      R"({"mesh": {"torus": {"major_radius": 1, "minor_radius": 0.5, "major_segments": 4096,
+      "minor_segments": 2000}}})",
+      {": mesh.torus: major_segments x minor_segments = 4096 x 2000 make 16384000 triangles", "limit of 10000000"});
+  REQUIRE(parse(R"({"mesh": {"sphere": {"radius": 1, "segments": 4096, "rings": 1000}}})").ok());
+  require_error("{" + box_mesh + R"(, "debris": {"per_impact": 100001}})",
+                {": debris.per_impact: must be <= 100000, got 100001"});
+  require_error("{" + box_mesh + R"(, "grid": {"prefracture": [100000], "runtime": [10, 11]}})",
+                {": grid: cell 100000 x 11 can make 1100000 runtime pieces, which exceeds the limit of 1000000"});
+  REQUIRE(parse("{" + box_mesh + R"(, "grid": {"prefracture": [100000], "runtime": [10]}})").ok());
+
+  // Lists past their limits: 101 x 100 grid cells, 1001 impacts, 1001 planes, a prism of 100001 corners.
+  const auto counts = [](int from, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) {
+      if (i > 0) out += ",";
+      out += std::to_string(from + i);
+    }
+    return "[" + out + "]";
+  };
+  require_error(
+      "{" + box_mesh + R"(, "grid": {"prefracture": )" + counts(1, 101) + R"(, "runtime": )" + counts(1, 100) + "}}",
+      {": grid: 101 x 100 = 10100 cells exceed the limit of 10000 cells per grid"});
+  REQUIRE(parse("{" + box_mesh + R"(, "grid": {"prefracture": )" + counts(1, 100) + R"(, "runtime": )" +
+                counts(1, 100) + "}}")
+              .ok());
+  const auto repeat = [](const std::string& item, int n) {
+    std::string out;
+    for (int i = 0; i < n; ++i) {
+      if (i > 0) out += ",";
+      out += item;
+    }
+    return "[" + out + "]";
+  };
+  const std::string impact = R"({"frame": 1, "point": [0, 0, 0], "direction": [1, 0, 0], "impulse": 1})";
+  require_error("{" + box_mesh + R"(, "impacts": )" + repeat(impact, 1001) + "}",
+                {": impacts: 1001 impacts exceed the limit of 1000 impacts per case"});
+  REQUIRE(parse("{" + box_mesh + R"(, "impacts": )" + repeat(impact, 1000) + "}").ok());
+  const std::string plane = R"({"point": [0, 0, 0], "normal": [1, 0, 0]})";
+  require_error("{" + box_mesh + R"(, "prefracture": {"planes": )" + repeat(plane, 1001) + "}}",
+                {": prefracture.planes: 1001 planes exceed the limit of 1000 planes"});
+  std::string outline;
+  for (int i = 0; i < 100001; ++i) outline += fmt::format("{}[{}, {}]", i ? "," : "", i, i % 2);
+  require_error(R"({"mesh": {"prism": {"outline": [)" + outline + "]}}}",
+                {": mesh.prism: 100001 corners (outline and holes) exceed the limit of 100000 corners per prism"});
+}
+
+TEST_CASE("cases: a case file larger than the limit is refused before it is read", "[cases][limits]") {
+  const fs::path file = scratch("large") / "large.json";
+  { std::ofstream(file) << "{" << box_mesh << "}"; }
+  REQUIRE(load_case(file).ok());
+  fs::resize_file(file, (16u << 20) + 1);  // sparse: nothing written past the text
+  const Result<Case> c = load_case(file);
+  REQUIRE_FALSE(c.ok());
+  CHECK(c.error().message == file.string() + ": 16777217 bytes exceed the limit of 16777216 bytes per case file");
+  fs::remove(file);
 }
 
 TEST_CASE("cases: structural errors name the key", "[cases]") {

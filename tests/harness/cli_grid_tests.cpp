@@ -137,3 +137,56 @@ TEST_CASE("cli: grid refuses an unknown schedule and a bad latency budget with e
   REQUIRE(r.err.find("schedule.work_budget_ms") != std::string::npos);
   REQUIRE_FALSE(std::filesystem::exists(dir / "grid.json"));
 }
+
+TEST_CASE("cli: grid --timeout fails a cell that runs too long and goes on with the next", "[cli][grid][timeout]") {
+  const auto dir = scratch("timeout");
+  const auto json = dir / "grid.json";
+  // Cell 20000 x 5 takes about a minute (its pre-fracture alone); cell 10 x 5 a few ms.
+  const auto r = run_cli(
+      "grid --case building --prefracture 20000,10 --runtime 5 --repetitions 1 --frames 2 "
+      "--no-cache --timeout 2 --json " +
+      json.string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 1);
+  REQUIRE(r.err.find("gate failed: cell 20000 x 5: timeout after 2 s") != std::string::npos);
+  REQUIRE(r.err.find("cell 10 x 5") == std::string::npos);
+  REQUIRE(r.out.find("**timeout after 2 s !**") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(json));
+  REQUIRE(j.at("cell_timeout_s").get<double>() == 2.0);
+  REQUIRE(j.at("passed").get<bool>() == false);
+  REQUIRE(j.at("cells").size() == 2);
+  const auto& late = j.at("cells")[0];
+  REQUIRE(late.at("prefracture") == 20000);
+  REQUIRE(late.at("failed") == "timeout after 2 s");
+  REQUIRE(late.at("samples").empty());
+  const auto& ran = j.at("cells")[1];  // the next cell ran, in its own child, and came back whole
+  REQUIRE(ran.at("prefracture") == 10);
+  REQUIRE_FALSE(ran.contains("failed"));
+  REQUIRE(ran.at("within_budget").get<bool>());
+  REQUIRE(ran.at("samples").size() == 1);
+  REQUIRE(ran.at("samples")[0].at("frame_ms").size() == 2);
+  REQUIRE(ran.at("samples")[0].at("fragments").get<int>() >= 10);
+  const std::string csv = slurp(dir / "grid.csv");
+  REQUIRE(line_count(csv) == 3);
+  REQUIRE(csv.find(",timeout after 2 s\n") != std::string::npos);
+}
+
+TEST_CASE("cli: grid refuses a bad --timeout with exit 2, one line, and writes nothing", "[cli][grid][timeout]") {
+  const auto dir = scratch("bad-timeout");
+  const auto json = dir / "grid.json";
+  const std::string out = " --frames 1 --repetitions 1 --prefracture 10 --runtime 5 --no-cache --json " + json.string();
+  for (const std::string value : {"0", "-1", "nan", "inf", "abc", "1e400"}) {
+    const auto r = run_cli("grid --case building --timeout " + value + out);
+    INFO(value << "\n" << r.err);
+    REQUIRE(r.exit_code == 2);
+    REQUIRE(line_count(r.err) == 1);
+    REQUIRE(r.err.find("--timeout") != std::string::npos);
+    REQUIRE_FALSE(std::filesystem::exists(json));
+  }
+  const auto r = run_cli("grid --case building --timeout 5 --metric instructions" + out);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 2);
+  REQUIRE(line_count(r.err) == 1);
+  REQUIRE(r.err.find("--timeout: not available with --metric instructions") != std::string::npos);
+  REQUIRE(std::filesystem::is_empty(dir));
+}

@@ -7,6 +7,7 @@
 #include <CGAL/Polygon_mesh_processing/clip.h>
 
 #include <exception>
+#include <stdexcept>
 #include <memory>
 #include <string>
 #include <utility>
@@ -117,7 +118,9 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_planes(const Mesh& 
   // n planes can make up to about n + 1 pieces of a convex solid, more of a non-convex one.
   if (Status s = check_reference_size(planes.size(), "planes"); !s) return s.error();
   return run(solid, [&](const ExactClipKernel& kernel, std::vector<ExactClipKernel::Piece> start) {
-    return slice_by_planes(kernel, std::move(start), planes);
+    auto pieces = slice_by_planes(kernel, std::move(start), planes, static_cast<std::size_t>(kMaxFragments));
+    if (!pieces) throw std::runtime_error(pieces.error().message);
+    return std::move(*pieces);
   });
 }
 

@@ -6,6 +6,7 @@
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
 #include "algorithms/fracture/recursive_slicing.h"
 
+#include <algorithm>
 #include <memory>
 
 namespace shatter {
@@ -70,11 +71,14 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
   return to_fragments(slice_recursively(kernel, start_pieces(solid), params.fragments, params.seed));
 }
 
-Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid,
-                                                                      std::span<const Plane> planes) const {
+Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
+                                                                      int max_fragments) const {
   if (Status s = check_planes(planes); !s) return s.error();
   const SliceKernel kernel;
-  return to_fragments(slice_by_planes(kernel, start_pieces(solid), planes));
+  auto pieces =
+      slice_by_planes(kernel, start_pieces(solid), planes, static_cast<std::size_t>(std::max(max_fragments, 1)));
+  if (!pieces) return Error{"plane-slice: " + pieces.error().message};
+  return to_fragments(std::move(*pieces));
 }
 
 void register_plane_slice(FracturerRegistry& registry) {

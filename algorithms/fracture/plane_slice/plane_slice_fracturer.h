@@ -3,6 +3,7 @@
 /// constrained Delaunay triangulation, disconnected parts split into their own fragments.
 
 #include "algorithms/core/plane.h"
+#include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/fracture/fracturer.h"
 #include "algorithms/fracture/fracturer_registry.h"
 
@@ -16,9 +17,10 @@ class PlaneSliceFracturer final : public Fracturer {
   [[nodiscard]] std::string_view name() const override { return "plane-slice"; }
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
-  /// Cuts `solid` by each plane in turn (every piece a plane crosses is split).
-  [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid,
-                                                                 std::span<const Plane> planes) const;
+  /// Cuts `solid` by each plane in turn (every piece a plane crosses is split); an error once the
+  /// pieces outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller).
+  [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
+                                                                 int max_fragments = kMaxFragments) const;
 };
 
 /// Registers "plane-slice".

@@ -1,0 +1,53 @@
+#include "harness/grid/isolated_cell.h"
+
+#include "harness/results/grid_reader.h"
+#include "harness/results/grid_report.h"
+#include "harness/stability/isolated_run.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace shatter {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+GridCell failed_cell(const GridCell& settings, std::string reason) {
+  GridCell cell = settings;
+  cell.samples.clear();
+  cell.within_budget = false;
+  cell.within_latency_budget = false;
+  cell.failed = std::move(reason);
+  return cell;
+}
+
+}  // namespace
+
+Result<GridCell> run_cell_isolated(const std::function<Result<GridCell>()>& run, const GridCell& settings,
+                                   double timeout_s, double latency_budget_ms) {
+  const IsolatedRun child = run_isolated(
+      [&] {
+        Result<GridCell> cell = run();
+        const Json out = cell ? Json{{"cell", grid_cell_to_json(*cell)}} : Json{{"error", cell.error().message}};
+        return out.dump();
+      },
+      timeout_s);
+  if (child.end == IsolatedRun::End::timed_out)
+    return failed_cell(settings, fmt::format("timeout after {:g} s", timeout_s));
+  if (child.end == IsolatedRun::End::crashed) return failed_cell(settings, "crashed: " + child.detail);
+  const Json answer = Json::parse(child.output, nullptr, false);
+  if (answer.is_discarded() || !answer.is_object())
+    return failed_cell(settings, "crashed: the child's result is not JSON");
+  if (const auto error = answer.find("error"); error != answer.end() && error->is_string())
+    return Error{error->get<std::string>()};
+  const auto cell = answer.find("cell");
+  if (cell == answer.end()) return failed_cell(settings, "crashed: the child's result holds no cell");
+  Result<GridCell> back = grid_cell_from_json(
+      *cell, fmt::format("cell {} x {}", settings.prefracture, settings.runtime), latency_budget_ms);
+  if (!back) return failed_cell(settings, "crashed: the child's result does not read back: " + back.error().message);
+  return back;
+}
+
+}  // namespace shatter
