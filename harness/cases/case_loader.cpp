@@ -274,7 +274,9 @@ std::optional<ScheduleMode> schedule_mode_from_name(std::string_view name) {
   return std::nullopt;
 }
 
-Result<Case> parse_case(std::string_view text, const fs::path& source) {
+namespace {
+
+Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   const std::string file = source.empty() ? std::string("<case>") : source.string();
   Result<json> parsed = parse_json(text, file);
   if (!parsed) return parsed.error();
@@ -309,6 +311,15 @@ Result<Case> parse_case(std::string_view text, const fs::path& source) {
   if (root.contains("fade_out")) c.fade_out = read_fade_out(r, root["fade_out"]);
   if (root.contains("debris")) c.debris = read_debris(r, root["debris"]);
   if (r.failed()) return r.error();
+  return c;
+}
+
+}  // namespace
+
+Result<Case> parse_case(std::string_view text, const fs::path& source) {
+  Result<Case> c = parse_case_text(text, source);
+  // Messages quote keys and values of the file: keep them on one line whatever those hold.
+  if (!c) return Error{escape_control_characters(c.error().message)};
   return c;
 }
 

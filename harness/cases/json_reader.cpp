@@ -99,9 +99,29 @@ Result<json> parse_json(std::string_view text, const std::string& file) {
   }
 }
 
+std::string escape_control_characters(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7f) {
+      out += ch;
+    } else if (ch == '\n') {
+      out += "\\n";
+    } else if (ch == '\r') {
+      out += "\\r";
+    } else if (ch == '\t') {
+      out += "\\t";
+    } else {
+      out += fmt::format("\\x{:02x}", c);
+    }
+  }
+  return out;
+}
+
 std::string key_path(std::string_view parent, std::string_view key) {
-  if (parent.empty()) return std::string(key);
-  return fmt::format("{}.{}", parent, key);
+  if (parent.empty()) return escape_control_characters(key);
+  return fmt::format("{}.{}", parent, escape_control_characters(key));
 }
 
 std::string index_path(std::string_view parent, std::size_t index) { return fmt::format("{}[{}]", parent, index); }

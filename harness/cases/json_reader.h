@@ -24,6 +24,10 @@ namespace shatter {
 /// repeated within one object is an error too (JSON would silently keep the last one).
 Result<nlohmann::json> parse_json(std::string_view text, const std::string& file);
 
+/// `text` with every control character (below 0x20, and 0x7f) written as an escape (\n, \t, \x01),
+/// so that a message quoting user input stays on one line.
+std::string escape_control_characters(std::string_view text);
+
 /// Path of member `key` of the object at `parent` ("" is the root): "material.density".
 std::string key_path(std::string_view parent, std::string_view key);
 

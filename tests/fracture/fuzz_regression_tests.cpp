@@ -5,6 +5,7 @@
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/fracture/plane_slice/cap_triangulator.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
+#include "harness/cases/case_loader.h"
 
 #include <catch2/catch.hpp>
 
@@ -59,4 +60,18 @@ TEST_CASE("fuzz regression: a cap a few subnormals wide triangulates without ove
     total += signed_volume(f.mesh);
   }
   CHECK(std::abs(total - volume) <= 1e-9 * volume);
+}
+
+TEST_CASE("fuzz regression: a case key holding a newline is named on one line", "[case-loader]") {
+  // case_loader_fuzzer found {"\n": "C"}: the unknown key was quoted as it is, so the message broke
+  // across two lines. Every case loader message now writes control characters as escapes.
+  const auto path = std::filesystem::path(SHATTER_SOURCE_DIR) / "tests" / "fixtures" / "fuzz" / "case_control_character_key.json";
+  const Result<Case> from_file = load_case(path);
+  REQUIRE_FALSE(from_file);
+  CHECK(from_file.error().message.find('\n') == std::string::npos);
+  CHECK_THAT(from_file.error().message, Catch::Contains(": \\n: unknown key"));
+  // Values too: a fracturer name with a tab and a bell character.
+  const Result<Case> value = parse_case(R"({"mesh": {"box": [1, 1, 1]}, "runtime": {"fracturer": "a\tb\u0007"}})", "v.json");
+  REQUIRE_FALSE(value);
+  CHECK(value.error().message.find_first_of("\t\a\n") == std::string::npos);
 }
