@@ -26,10 +26,18 @@ TEST_CASE("fuzz regression: a cap a few subnormals wide triangulates without ove
   const std::vector<Vec2> points = {{0.0, 0.0}, {1e-310, 0.0}, {0.0, 1e-310}, {3e-311, 3e-311}};
   const std::vector<CapEdge> edges = {{0, 1}, {1, 2}, {2, 0}};
   const CapTriangulation cap = triangulate_cap(points, edges);
-  if (cap.ok) {
-    for (const Triangle& t : cap.triangles)
-      for (const std::int32_t i : t) CHECK((i >= 0 && i < 4));
-  }
+  // Scaled by a power of two before the predicates (exact), the cap is the one triangle it is.
+  REQUIRE(cap.ok);
+  REQUIRE(cap.triangles.size() == 1);
+  const Triangle& t = cap.triangles[0];  // (0, 1, 2) up to rotation: counter-clockwise, as the outline
+  CHECK(((t == Triangle{0, 1, 2}) || (t == Triangle{1, 2, 0}) || (t == Triangle{2, 0, 1})));
+  // The same at the other end of the range, and mirrored: the orientation is kept.
+  const std::vector<Vec2> huge = {{0.0, 0.0}, {1e306, 0.0}, {0.0, 1e306}};
+  const CapTriangulation big = triangulate_cap(huge, edges);
+  REQUIRE(big.ok);
+  CHECK(big.triangles.size() == 1);
+  const std::vector<CapEdge> clockwise = {{0, 2}, {2, 1}, {1, 0}};
+  CHECK(triangulate_cap(points, clockwise).triangles.empty());  // a hole with no outline around it
 
   // The input itself: the fuzzer's layout (mode byte, plane point, plane normal).
   const auto path = std::filesystem::path(SHATTER_SOURCE_DIR) / "tests" / "fixtures" / "fuzz" / "plane_slice_subnormal_cap.bin";

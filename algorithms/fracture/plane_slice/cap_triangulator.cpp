@@ -417,6 +417,16 @@ CapTriangulation triangulate_cap(std::span<const Vec2> points, std::span<const C
   }
   const auto n = static_cast<Id>(ws.pts.size());
   if (n < 3) return out;
+  // Exact predicates are exact only while their products neither underflow nor overflow: a cap whose
+  // coordinates are all subnormal (a cut through a corner a few 1e-311 wide) has every orientation
+  // read as 0. Scaling by a power of two is exact and keeps every predicate's sign (they are
+  // homogeneous), so far-out magnitudes are brought to about 1 first.
+  double largest = 0.0;
+  for (const Vec2& q : ws.pts) largest = std::max(largest, q.cwiseAbs().maxCoeff());
+  if (largest > 0.0 && (largest < 0x1p-400 || largest > 0x1p400)) {
+    const int exponent = -std::ilogb(largest);  // 2^exponent itself may not be a double (2^1030)
+    for (Vec2& q : ws.pts) q = Vec2(std::ldexp(q.x(), exponent), std::ldexp(q.y(), exponent));
+  }
 
   // Super triangle well outside the bounding box.
   Vec2 lo = ws.pts[0], hi = ws.pts[0];
