@@ -233,7 +233,7 @@ std::string cell_table(const GridResult& grid, const std::function<std::string(c
     out += fmt::format("| {} |", r);
     for (const int c : cols) {
       const auto it = at.find({r, c});
-      out += it == at.end() ? std::string(" |") : " " + text(*it->second) + " |";
+      out += it == at.end() ? std::string(" |") : fmt::format(" {} |", text(*it->second));
     }
     out += "\n";
   }
