@@ -142,25 +142,7 @@ void add_error(CellError& e, const RunResult& run, bool first) {
   e.solver_residual = std::max(e.solver_residual, run.solver.residual);
 }
 
-void merge_stages(GridCell& cell, const RunResult& run) {
-  for (const std::string& name : run.stages.run())
-    if (std::find(cell.stages_run.begin(), cell.stages_run.end(), name) == cell.stages_run.end())
-      cell.stages_run.push_back(name);
-  // Keep data-flow order.
-  std::vector<std::string> ordered;
-  for (const Stage s : kAllStages) {
-    const std::string name(stage_name(s));
-    if (std::find(cell.stages_run.begin(), cell.stages_run.end(), name) != cell.stages_run.end())
-      ordered.push_back(name);
-  }
-  cell.stages_run = std::move(ordered);
-  for (const StageSkip& skip : run.stages.skips()) {
-    const bool known = std::any_of(cell.stages_skipped.begin(), cell.stages_skipped.end(), [&](const StageSkip& s) {
-      return s.stage == skip.stage && s.reason == skip.reason;
-    });
-    if (!known) cell.stages_skipped.push_back(skip);
-  }
-}
+void merge_stages(GridCell& cell, const RunResult& run) { add_cell_stages(cell, run.stages.run(), run.stages.skips()); }
 
 }  // namespace
 
@@ -193,6 +175,26 @@ void summarise_cell(GridCell& cell, double budget_ms, double latency_budget_ms) 
   cell.setup_ms = median_stages(cell.samples, &GridSample::setup_ms);
   cell.within_budget = cell.worst_frame_ms <= budget_ms;
   summarise_schedule(cell, latency_budget_ms);
+}
+
+void add_cell_stages(GridCell& cell, const std::vector<std::string>& run, const std::vector<StageSkip>& skipped) {
+  for (const std::string& name : run)
+    if (std::find(cell.stages_run.begin(), cell.stages_run.end(), name) == cell.stages_run.end())
+      cell.stages_run.push_back(name);
+  // Keep data-flow order.
+  std::vector<std::string> ordered;
+  for (const Stage s : kAllStages) {
+    const std::string name(stage_name(s));
+    if (std::find(cell.stages_run.begin(), cell.stages_run.end(), name) != cell.stages_run.end())
+      ordered.push_back(name);
+  }
+  cell.stages_run = std::move(ordered);
+  for (const StageSkip& skip : skipped) {
+    const bool known = std::any_of(cell.stages_skipped.begin(), cell.stages_skipped.end(), [&](const StageSkip& s) {
+      return s.stage == skip.stage && s.reason == skip.reason;
+    });
+    if (!known) cell.stages_skipped.push_back(skip);
+  }
 }
 
 void add_cell_error(CellError& into, const CellError& other) {

@@ -181,6 +181,10 @@ void summarise_cell(GridCell& cell, double budget_ms, double latency_budget_ms);
 /// Makes `into` the worst of the two error figures (as if their repetitions had been one cell's).
 void add_cell_error(CellError& into, const CellError& other);
 
+/// Adds the stage names `run` (kept in data-flow order, each once) and the skips `skipped` (each stage
+/// and reason once, first seen first) to `cell`'s lists.
+void add_cell_stages(GridCell& cell, const std::vector<std::string>& run, const std::vector<StageSkip>& skipped);
+
 /// Runs the grid of `prepared` (options checked by check_grid_options).
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options);
 

@@ -42,13 +42,7 @@ Result<StoredGrid> join_repetitions(const std::vector<StoredGrid>& parts, Stored
       if (!c.failed.empty() && into.failed.empty()) into.failed = c.failed;  // failed in one run: failed
       into.samples.insert(into.samples.end(), c.samples.begin(), c.samples.end());
       add_cell_error(into.error, c.error);
-      for (const std::string& stage : c.stages_run)
-        if (std::find(into.stages_run.begin(), into.stages_run.end(), stage) == into.stages_run.end())
-          into.stages_run.push_back(stage);
-      for (const StageSkip& skip : c.stages_skipped)
-        if (std::none_of(into.stages_skipped.begin(), into.stages_skipped.end(),
-                         [&](const StageSkip& s) { return s.stage == skip.stage && s.reason == skip.reason; }))
-          into.stages_skipped.push_back(skip);
+      add_cell_stages(into, c.stages_run, c.stages_skipped);
     }
     out.grid.repetitions += p.grid.repetitions;
     out.grid.wall_s += p.grid.wall_s;
