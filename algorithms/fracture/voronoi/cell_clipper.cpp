@@ -2,11 +2,11 @@
 #include "algorithms/core/axis_projection.h"
 
 #include "algorithms/core/predicates.h"
+#include "algorithms/fracture/plane_slice/convex_cap.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <unordered_map>
 
 namespace shatter {
 namespace {
@@ -412,28 +412,44 @@ bool CellClipper::settle_corners() {
 }
 
 bool CellClipper::triangulate_caps() {
-  std::unordered_map<std::int32_t, std::int32_t> point_of_ref;
   std::vector<std::int32_t> refs;
   std::vector<Vec2> points;
   std::vector<CapEdge> edges;
   std::vector<std::int32_t> order;
-  std::unordered_map<std::uint64_t, int> halfedges;
+  absl::flat_hash_map<std::uint64_t, int> halfedges;
+  std::vector<Triangle> fan;
+  const std::size_t ref_count = static_cast<std::size_t>(vertex_count_) + points_.size();
+  if (cap_stamp_.size() < ref_count) {
+    cap_stamp_.resize(ref_count, 0);
+    cap_slot_.resize(ref_count, 0);
+  }
   for (std::size_t plane = 0; plane < cap_edges_.size(); ++plane) {
     if (cap_edges_[plane].empty()) continue;
+    if (++cap_count_ == 0) {  // the stamps wrapped: forget every old one
+      std::fill(cap_stamp_.begin(), cap_stamp_.end(), 0);
+      cap_count_ = 1;
+    }
     const AxisProjection proj(planes_[plane].normal);
-    point_of_ref.clear();
     refs.clear();
     points.clear();
     edges.clear();
     const auto cap_point = [&](std::int32_t ref) {
-      const auto [it, inserted] = point_of_ref.try_emplace(ref, static_cast<std::int32_t>(refs.size()));
-      if (inserted) {
+      const auto r = static_cast<std::size_t>(ref);
+      if (cap_stamp_[r] != cap_count_) {
+        cap_stamp_[r] = cap_count_;
+        cap_slot_[r] = static_cast<std::int32_t>(refs.size());
         refs.push_back(ref);
         points.push_back(proj(position(ref)));
       }
-      return it->second;
+      return cap_slot_[r];
     };
     for (const CapEdge& e : cap_edges_[plane]) edges.push_back({cap_point(e[0]), cap_point(e[1])});
+    if (fan_convex_cap(points, edges, fan)) {  // the common case: one convex loop (see convex_cap.h)
+      for (const Triangle& t : fan)
+        out_.add_triangle(out_index(refs[static_cast<std::size_t>(t[0])]), out_index(refs[static_cast<std::size_t>(t[1])]),
+                          out_index(refs[static_cast<std::size_t>(t[2])]), FaceTag::cut);
+      continue;
+    }
     // Points that round to one position would be merged by the triangulation: refuse.
     order.resize(points.size());
     for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<std::int32_t>(k);

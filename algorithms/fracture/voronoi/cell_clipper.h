@@ -35,10 +35,12 @@
 #include "algorithms/fracture/voronoi/cell_polytope.h"
 #include "algorithms/fracture/voronoi/point_in_mesh.h"
 
+#include <absl/container/flat_hash_map.h>
+
 #include <cstdint>
 #include <memory>
 #include <span>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace shatter {
@@ -120,19 +122,21 @@ class CellClipper {
     std::uint64_t edge;  // the two refs of a solid edge's piece, smaller first
     int plane;
     bool operator==(const CrossingKey&) const = default;
-  };
-  struct CrossingHash {
-    std::size_t operator()(const CrossingKey& k) const {
-      return std::hash<std::uint64_t>()(k.edge * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(k.plane));
+    template <typename H>
+    friend H AbslHashValue(H h, const CrossingKey& k) {
+      return H::combine(std::move(h), k.edge, k.plane);
     }
   };
-  std::unordered_map<CrossingKey, std::int32_t, CrossingHash> edge_crossings_;  // -> ref
+  absl::flat_hash_map<CrossingKey, std::int32_t> edge_crossings_;  // -> ref
   std::vector<std::int32_t> out_of_vertex_;        // solid vertex -> index in out_, valid if seen_out_
   std::vector<std::uint32_t> seen_out_;
   std::vector<std::int32_t> out_of_point_;         // made point -> index in out_, -1 if absent
   std::vector<PolygonCorner> polygon_;
   std::vector<PolygonCorner> clipped_;
   std::vector<std::vector<CapEdge>> cap_edges_;    // per plane, edges over refs
+  std::vector<std::uint32_t> cap_stamp_;           // per ref: the cap its cap_slot_ is for
+  std::vector<std::int32_t> cap_slot_;             // per ref: its index among the cap's points
+  std::uint32_t cap_count_ = 0;                    // caps triangulated so far (the stamps)
   std::vector<std::pair<std::uint64_t, EdgePoint>> edge_points_;  // (cell edge key, point)
   std::vector<std::int8_t> corner_inside_;         // per polytope corner: -1 unknown, 0 out, 1 in
   std::vector<std::pair<std::int32_t, std::int32_t>> free_edges_;  // cell edges no triangle meets

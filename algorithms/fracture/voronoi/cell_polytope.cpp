@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <utility>
 #include <vector>
 
@@ -80,8 +79,16 @@ bool clip(CellPolytope& p, const Plane& plane, int label) {
     return corner;
   };
   std::vector<CellPolytope::Face> kept;
-  std::map<std::int32_t, std::pair<std::int32_t, int>> new_edges;  // on the new face: start -> (end, across)
-  for (const CellPolytope::Face& face : p.faces) {
+  kept.reserve(p.faces.size() + 1);
+  // On the new face, a few edges: (start, (end, across)).
+  std::vector<std::pair<std::int32_t, std::pair<std::int32_t, int>>> new_edges;
+  for (CellPolytope::Face& face : p.faces) {
+    const bool untouched = std::all_of(face.corners.begin(), face.corners.end(),
+                                       [&](std::int32_t c) { return d[static_cast<std::size_t>(c)] < 0; });
+    if (untouched) {  // wholly on the kept side: the face stays as it is
+      kept.push_back(std::move(face));
+      continue;
+    }
     CellPolytope::Face out;
     out.label = face.label;
     const std::size_t n = face.corners.size();
@@ -102,17 +109,22 @@ bool clip(CellPolytope& p, const Plane& plane, int label) {
       }
     }
     for (std::size_t k = 0; k < out.corners.size(); ++k)
-      if (out.across[k] == label) new_edges[out.corners[(k + 1) % out.corners.size()]] = {out.corners[k], face.label};
+      if (out.across[k] == label) new_edges.push_back({out.corners[(k + 1) % out.corners.size()], {out.corners[k], face.label}});
     if (out.corners.size() >= 3) kept.push_back(std::move(out));
   }
   if (new_edges.size() >= 3) {
     // The new face runs along the new edges reversed; they must form one loop.
     CellPolytope::Face face;
     face.label = label;
-    std::int32_t at = new_edges.begin()->first;
+    // A start met twice would make the loop ambiguous (the map this replaces kept the last one).
+    std::sort(new_edges.begin(), new_edges.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (std::size_t k = 1; k < new_edges.size(); ++k)
+      if (new_edges[k].first == new_edges[k - 1].first) return false;
+    std::int32_t at = new_edges.front().first;
     for (std::size_t step = 0; step < new_edges.size(); ++step) {
-      const auto it = new_edges.find(at);
-      if (it == new_edges.end()) return false;
+      const auto it = std::lower_bound(new_edges.begin(), new_edges.end(), at,
+                                       [](const auto& x, std::int32_t key) { return x.first < key; });
+      if (it == new_edges.end() || it->first != at) return false;
       face.corners.push_back(at);
       face.across.push_back(it->second.second);
       at = it->second.first;
