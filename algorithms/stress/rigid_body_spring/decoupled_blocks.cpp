@@ -69,4 +69,11 @@ Eigen::SparseMatrix<double> block_matrix(const Eigen::SparseMatrix<double>& k, s
   return out;
 }
 
+std::vector<int> node_groups(std::span<const int> unknowns) {
+  std::vector<int> groups(unknowns.size());
+  for (std::size_t i = 0; i < unknowns.size(); ++i)
+    groups[i] = i == 0 ? 0 : groups[i - 1] + (unknowns[i] / 6 != unknowns[i - 1] / 6 ? 1 : 0);
+  return groups;
+}
+
 }  // namespace shatter
