@@ -97,7 +97,7 @@ bool CascadeSolver::factorize(Block& block) {
   if (block.factorised) return true;
   if (!block.analysed) {
     block.analysed = true;
-    block.direct = block.cholesky.analyze(block.lower) && block.cholesky.factor_flops() <= settings_.direct_max_flops;
+    block.direct = block.cholesky.analyze(block.lower, node_groups(block.unknowns)) && block.cholesky.factor_flops() <= settings_.direct_max_flops;
   }
   if (!block.direct) return false;
   const double* value = stiffness_->matrix().valuePtr();

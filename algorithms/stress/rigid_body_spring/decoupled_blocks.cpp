@@ -1,6 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <numeric>
 
@@ -8,9 +9,10 @@ namespace shatter {
 
 namespace {
 
-/// True when entry (i, j) = v is kept: nonzero and above the round-off tolerance.
+/// True when entry (i, j) = v is kept: nonzero and above the round-off tolerance (compared squared, no
+/// square root per entry; tolerance 0 keeps every nonzero even where v^2 underflows).
 bool kept(const Eigen::VectorXd& diagonal, Eigen::Index i, Eigen::Index j, double v, double tolerance) {
-  return v != 0.0 && std::abs(v) > tolerance * std::sqrt(std::abs(diagonal[i] * diagonal[j]));
+  return v != 0.0 && (tolerance == 0.0 || v * v > tolerance * tolerance * std::abs(diagonal[i] * diagonal[j]));
 }
 
 }  // namespace
@@ -46,27 +48,43 @@ std::vector<std::vector<int>> decoupled_blocks(const Eigen::SparseMatrix<double>
 
 Eigen::SparseMatrix<double> block_matrix(const Eigen::SparseMatrix<double>& k, std::span<const int> block,
                                          std::span<const int> position, double tolerance, bool lower_only) {
+  assert(k.isCompressed());
   const Eigen::VectorXd diagonal = k.diagonal();
-  const Eigen::Index m = static_cast<Eigen::Index>(block.size());
-  Eigen::SparseMatrix<double> out(m, m);
-  Eigen::VectorXi counts = Eigen::VectorXi::Zero(m);
-  for (Eigen::Index c = 0; c < m; ++c)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(k, block[static_cast<std::size_t>(c)]); it; ++it)
-      ++counts[c];
-  out.reserve(counts);
-  // The block's columns are ascending and so are K's rows within a column: insertion stays sorted.
-  for (Eigen::Index c = 0; c < m; ++c) {
+  const int m = static_cast<int>(block.size());
+  // Straight into compressed columns: the block's columns are ascending and so are K's rows within a
+  // column, so every column's rows come out sorted.
+  std::vector<int> outer(static_cast<std::size_t>(m) + 1, 0), rows;
+  std::vector<double> values;
+  rows.reserve(static_cast<std::size_t>(k.nonZeros()));
+  values.reserve(static_cast<std::size_t>(k.nonZeros()));
+  const int* k_outer = k.outerIndexPtr();
+  const int* k_inner = k.innerIndexPtr();
+  const double* k_value = k.valuePtr();
+  for (int c = 0; c < m; ++c) {
     const int gc = block[static_cast<std::size_t>(c)];
-    for (Eigen::SparseMatrix<double>::InnerIterator it(k, gc); it; ++it) {
-      const int gr = static_cast<int>(it.row());
-      if (!kept(diagonal, gr, gc, it.value(), tolerance) && gr != gc) continue;
+    for (int at = k_outer[gc]; at < k_outer[gc + 1]; ++at) {
+      const int gr = k_inner[at];
+      if (!kept(diagonal, gr, gc, k_value[at], tolerance) && gr != gc) continue;
       const int r = position[static_cast<std::size_t>(gr)];
       if (lower_only && r < c) continue;
-      out.insert(r, c) = it.value();
+      rows.push_back(r);
+      values.push_back(k_value[at]);
     }
+    outer[static_cast<std::size_t>(c) + 1] = static_cast<int>(rows.size());
   }
-  out.makeCompressed();
+  Eigen::SparseMatrix<double> out(m, m);
+  out.resizeNonZeros(static_cast<Eigen::Index>(rows.size()));
+  std::copy(outer.begin(), outer.end(), out.outerIndexPtr());
+  std::copy(rows.begin(), rows.end(), out.innerIndexPtr());
+  std::copy(values.begin(), values.end(), out.valuePtr());
   return out;
+}
+
+std::vector<int> node_groups(std::span<const int> unknowns) {
+  std::vector<int> groups(unknowns.size());
+  for (std::size_t i = 0; i < unknowns.size(); ++i)
+    groups[i] = i == 0 ? 0 : groups[i - 1] + (unknowns[i] / 6 != unknowns[i - 1] / 6 ? 1 : 0);
+  return groups;
 }
 
 }  // namespace shatter

@@ -27,4 +27,8 @@ std::vector<std::vector<int>> decoupled_blocks(const Eigen::SparseMatrix<double>
 Eigen::SparseMatrix<double> block_matrix(const Eigen::SparseMatrix<double>& k, std::span<const int> block,
                                          std::span<const int> position, double tolerance, bool lower_only);
 
+/// One group id per unknown of `unknowns` (ascending global indices, 6 per node as the stiffness
+/// assemblies number them): consecutive ids from 0, one per node, for SupernodalCholesky::analyze.
+std::vector<int> node_groups(std::span<const int> unknowns);
+
 }  // namespace shatter

@@ -66,7 +66,7 @@ void try_factorize(const SparseMatrix& k, const std::vector<int>& position, cons
   block.analysed = true;
   const SparseMatrix lower = block_matrix(k, block.unknowns, position, settings.decoupling_tolerance, true);
   SupernodalCholesky cholesky;
-  if (cholesky.analyze(lower) && cholesky.factor_flops() <= settings.direct_max_flops && cholesky.factorize(lower))
+  if (cholesky.analyze(lower, node_groups(block.unknowns)) && cholesky.factor_flops() <= settings.direct_max_flops && cholesky.factorize(lower))
     block.factor = std::move(cholesky);
 }
 

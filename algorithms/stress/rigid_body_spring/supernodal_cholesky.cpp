@@ -1,10 +1,13 @@
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
+#include <amd.h>
 #include <cholmod.h>
+#include <dlfcn.h>
 #include <omp.h>
 
 #include <cassert>
 #include <limits>
+#include <vector>
 
 namespace shatter {
 
@@ -52,19 +55,32 @@ cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& lower) {
   return a;
 }
 
+/// Set while this thread is inside CHOLMOD under SingleThreaded: its OpenMP regions then run inline.
+thread_local bool run_regions_inline = false;
+
 /// Runs CHOLMOD single-threaded while alive. Debian's CHOLMOD opens OpenMP teams of 4 threads for
 /// large supernodes; on 2 shared cores the wake-ups cost more than they gain (evaluating the 23 x 22
 /// wall: 6.0 ms with them, 4.2 ms without; the 71 x 71 wall: 156 ms against 82 ms). The bound is a
-/// process-wide OpenMP setting, restored on exit; nothing else in shatterbench uses OpenMP.
+/// process-wide OpenMP setting, restored on exit; nothing else in shatterbench uses OpenMP. Even a team
+/// of one costs a team set-up and a futex wake-up per region, and CHOLMOD opens regions per supernode
+/// (~2,000 per factorisation of the 23 x 22 wall's in-plane half), so the regions of this thread are
+/// also run as plain calls (GOMP_parallel below).
 class SingleThreaded {
  public:
-  SingleThreaded() : saved_(omp_get_max_active_levels()) { omp_set_max_active_levels(0); }
-  ~SingleThreaded() { omp_set_max_active_levels(saved_); }
+  SingleThreaded() : saved_(omp_get_max_active_levels()), saved_inline_(run_regions_inline) {
+    omp_set_max_active_levels(0);
+    run_regions_inline = true;
+  }
+  ~SingleThreaded() {
+    run_regions_inline = saved_inline_;
+    omp_set_max_active_levels(saved_);
+  }
   SingleThreaded(const SingleThreaded&) = delete;
   SingleThreaded& operator=(const SingleThreaded&) = delete;
 
  private:
   int saved_;
+  bool saved_inline_;
 };
 
 }  // namespace
@@ -74,12 +90,49 @@ SupernodalCholesky::~SupernodalCholesky() = default;
 SupernodalCholesky::SupernodalCholesky(SupernodalCholesky&&) noexcept = default;
 SupernodalCholesky& SupernodalCholesky::operator=(SupernodalCholesky&&) noexcept = default;
 
-bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower) {
+bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups) {
   State& s = *state_;
   if (s.factor) cholmod_free_factor(&s.factor, &s.common);
   cholmod_sparse a = view_lower(lower);
   const SingleThreaded single;
-  s.factor = cholmod_analyze(&a, &s.common);
+  if (groups.empty()) {
+    s.common.method[0].ordering = CHOLMOD_AMD;
+    s.factor = cholmod_analyze(&a, &s.common);
+    return s.factor != nullptr && s.common.status == CHOLMOD_OK;
+  }
+  // The graph between groups, one column per group: the groups of the rows below the diagonal of
+  // its columns, each once (a group's columns are consecutive; AMD orders the pattern of G + G^T).
+  const int n = static_cast<int>(lower.cols());
+  assert(static_cast<int>(groups.size()) == n);
+  const int group_count = n > 0 ? groups[static_cast<std::size_t>(n - 1)] + 1 : 0;
+  std::vector<int> first(static_cast<std::size_t>(group_count) + 1, n), outer(1, 0), rows;
+  std::vector<int> mark(static_cast<std::size_t>(group_count), -1);
+  const int* lower_outer = lower.outerIndexPtr();
+  const int* lower_inner = lower.innerIndexPtr();
+  for (int c = 0, g = -1; c < n; ++c) {
+    const int gc = groups[static_cast<std::size_t>(c)];
+    assert(gc >= g && gc < group_count);
+    for (; g < gc; ++g) {
+      if (g >= 0) outer.push_back(static_cast<int>(rows.size()));
+      first[static_cast<std::size_t>(g) + 1] = c;
+    }
+    for (int at = lower_outer[c]; at < lower_outer[c + 1]; ++at) {
+      const int gr = groups[static_cast<std::size_t>(lower_inner[at])];
+      if (gr != gc && mark[static_cast<std::size_t>(gr)] != gc) {
+        mark[static_cast<std::size_t>(gr)] = gc;
+        rows.push_back(gr);
+      }
+    }
+  }
+  if (group_count > 0) outer.push_back(static_cast<int>(rows.size()));
+  std::vector<int> group_order(static_cast<std::size_t>(group_count)), perm;
+  const int status = amd_order(group_count, outer.data(), rows.data(), group_order.data(), nullptr, nullptr);
+  if (status != AMD_OK && status != AMD_OK_BUT_JUMBLED) return false;
+  perm.reserve(static_cast<std::size_t>(n));
+  for (const int g : group_order)
+    for (int c = first[static_cast<std::size_t>(g)]; c < first[static_cast<std::size_t>(g) + 1]; ++c) perm.push_back(c);
+  s.common.method[0].ordering = CHOLMOD_GIVEN;
+  s.factor = cholmod_analyze_p(&a, perm.data(), nullptr, 0, &s.common);
   return s.factor != nullptr && s.common.status == CHOLMOD_OK;
 }
 
@@ -118,3 +171,20 @@ Eigen::VectorXd SupernodalCholesky::solve(const Eigen::VectorXd& b) const {
 }
 
 }  // namespace shatter
+
+/// libgomp's entry point of `#pragma omp parallel` (GCC 4.9 and later), defined here so that it takes
+/// precedence over libgomp's for CHOLMOD's calls. Under SingleThreaded the region body runs as a plain
+/// call on this thread: the same code a team of one runs (omp_get_num_threads() is 1 and
+/// omp_get_thread_num() 0 outside a team, worksharing and barriers outside a team are valid and act on
+/// this thread alone), without libgomp's team set-up and the futex wake-up at its closing barrier.
+/// Everywhere else it forwards to libgomp's. Evaluating the 23 x 22 wall: 2.97 ms before, 2.24 ms with
+/// it (docs/stress.md, section 4).
+extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads, unsigned flags) {
+  if (shatter::run_regions_inline) {
+    fn(data);
+    return;
+  }
+  using Entry = void (*)(void (*)(void*), void*, unsigned, unsigned);
+  static const Entry libgomp = reinterpret_cast<Entry>(dlsym(RTLD_NEXT, "GOMP_parallel"));
+  libgomp(fn, data, num_threads, flags);
+}

@@ -11,6 +11,7 @@
 #include <Eigen/SparseCore>
 
 #include <memory>
+#include <span>
 
 namespace shatter {
 
@@ -24,8 +25,12 @@ class SupernodalCholesky {
   SupernodalCholesky& operator=(const SupernodalCholesky&) = delete;
 
   /// Orders and analyses `lower` (the lower triangle of K, compressed columns, square). False if
-  /// CHOLMOD fails (out of memory, bad input).
-  bool analyze(const Eigen::SparseMatrix<double>& lower);
+  /// CHOLMOD fails (out of memory, bad input). `groups` is empty (AMD on the unknowns) or holds one
+  /// group id per column, non-decreasing with the column, ids from 0 on: AMD then orders the graph
+  /// between groups and each group's columns stay together in their order (the unknowns of one rigid
+  /// body couple to the same neighbours; AMD on the node graph costs a fraction of AMD on the
+  /// unknowns, docs/stress.md section 3).
+  bool analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups = {});
   /// Floating-point operations the numeric factorisation of the analysed pattern takes.
   [[nodiscard]] double factor_flops() const;
   /// Factorises `lower`, whose pattern must be the analysed one. False if K is not positive definite
