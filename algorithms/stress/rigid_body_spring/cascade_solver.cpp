@@ -1,5 +1,6 @@
 #include "algorithms/stress/rigid_body_spring/cascade_solver.h"
 
+#include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 
 #include <algorithm>
@@ -75,6 +76,12 @@ void CascadeSolver::build(const SupportGraph& graph) {
   }
 }
 
+CascadeSolver::~CascadeSolver() {
+  for (Block& block : blocks_)
+    if (block.cholesky && !block.failed)
+      keep_analysed(FactorPattern(block.lower, node_groups(block.unknowns)), std::move(*block.cholesky));
+}
+
 bool CascadeSolver::fits(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings) const {
   return graph_ == &graph && node_count_ == graph.node_count() && bond_count_ == graph.bond_count() &&
          young_modulus_ == material.young_modulus && shear_modulus_ == material.shear_modulus() &&
@@ -97,13 +104,15 @@ bool CascadeSolver::factorize(Block& block) {
   if (block.factorised) return true;
   if (!block.analysed) {
     block.analysed = true;
-    block.direct = block.cholesky.analyze(block.lower, node_groups(block.unknowns)) && block.cholesky.factor_flops() <= settings_.direct_max_flops;
+    block.cholesky = take_analysed(FactorPattern(block.lower, node_groups(block.unknowns)), block.lower);
+    block.direct = block.cholesky && block.cholesky->factor_flops() <= settings_.direct_max_flops;
   }
   if (!block.direct) return false;
   const double* value = stiffness_->matrix().valuePtr();
   double* out = block.lower.valuePtr();
   for (std::size_t i = 0; i < block.source.size(); ++i) out[i] = value[block.source[i]];
-  block.factorised = block.cholesky.factorize(block.lower);
+  block.factorised = block.cholesky->factorize(block.lower);
+  block.failed = block.failed || !block.factorised;
   return block.factorised;
 }
 
@@ -144,7 +153,7 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
     const Vector fb = gather(f, block.unknowns);
     if (fb.squaredNorm() == 0.0) continue;
     if (!factorize(block)) return std::nullopt;
-    const Vector x = block.cholesky.solve(fb);
+    const Vector x = block.cholesky->solve(fb);
     for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] = x[static_cast<Eigen::Index>(i)];
   }
   for (int step = 0; step < settings_.refinement_steps; ++step) {
@@ -153,7 +162,7 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
       const Vector rb = gather(r, block.unknowns);
       if (rb.norm() <= negligible) continue;
       if (!factorize(block)) return std::nullopt;
-      const Vector x = block.cholesky.solve(rb);
+      const Vector x = block.cholesky->solve(rb);
       for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] += x[static_cast<Eigen::Index>(i)];
     }
   }

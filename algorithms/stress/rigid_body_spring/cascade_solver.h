@@ -6,7 +6,9 @@
 /// identity rows for the nodes of falling clusters, graph_stiffness.h) serves every round. The split
 /// into decoupled blocks (decoupled_blocks.h), each block's lower-triangle pattern with its gather map
 /// from K, and each block's AMD ordering and CHOLMOD symbolic analysis are therefore done once; a round
-/// costs an assembly by scatter, a gather per block and a numeric factorisation. The anchored
+/// costs an assembly by scatter, a gather per block and a numeric factorisation. The analyses go back
+/// to the thread's analysis pool when the solver ends, so the next cascade on the same graph starts
+/// with them (the pattern is the intact graph's whatever broke). The anchored
 /// components share the system but not a single entry, so each one's solution is its own solve's,
 /// and the residual is reported per component, as for a solve of the component alone. The path steps
 /// aside (the caller solves per component) when it does not apply: a block above the flop limit of
@@ -32,6 +34,10 @@ class CascadeSolver final : public StressSolverState {
   /// A solver for `graph` and `material`; the intact pattern, springs and block split are built by the
   /// first solve (a cascade's first round goes per component and may be its only one).
   CascadeSolver(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings);
+  /// Returns the blocks' analysed factors to this thread's analysis pool.
+  ~CascadeSolver() override;
+  CascadeSolver(const CascadeSolver&) = delete;
+  CascadeSolver& operator=(const CascadeSolver&) = delete;
 
   /// True when built for this graph object (same sizes) and the same stiffness constants and settings.
   [[nodiscard]] bool fits(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings) const;
@@ -53,7 +59,8 @@ class CascadeSolver final : public StressSolverState {
     std::vector<int> unknowns;             // ascending
     Eigen::SparseMatrix<double> lower;     // fixed pattern, values gathered from K
     std::vector<int> source;               // #entries of lower: index in K's value array
-    SupernodalCholesky cholesky;
+    std::optional<SupernodalCholesky> cholesky;  // from the analysis pool (analysis_pool.h)
+    bool failed = false;                   // a factorisation failed: the factor is not pooled again
     bool analysed = false;                 // ordering and symbolic factor done
     bool direct = false;                   // analysed and within direct_max_flops
     bool factorised = false;               // numeric factor of the current K

@@ -1,5 +1,6 @@
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 
+#include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
@@ -56,18 +57,27 @@ SolverReport solve_block_cg(const SparseMatrix& k, const std::vector<int>& block
 struct Block {
   std::vector<int> unknowns;                 // ascending global indices
   std::optional<SupernodalCholesky> factor;  // set when factorised
+  std::optional<FactorPattern> pattern;      // the factor's pattern (for the analysis pool)
   bool analysed = false;                     // factorisation tried (factor empty: CG block)
 };
 
-/// Factorises `block` unless done already or too costly (then it stays a CG block).
+/// Factorises `block` unless done already or too costly (then it stays a CG block). The analysis
+/// comes from this thread's pool when the same pattern was analysed before (analysis_pool.h).
 void try_factorize(const SparseMatrix& k, const std::vector<int>& position, const SpringSolverSettings& settings,
                    Block& block) {
   if (block.analysed) return;
   block.analysed = true;
   const SparseMatrix lower = block_matrix(k, block.unknowns, position, settings.decoupling_tolerance, true);
-  SupernodalCholesky cholesky;
-  if (cholesky.analyze(lower, node_groups(block.unknowns)) && cholesky.factor_flops() <= settings.direct_max_flops && cholesky.factorize(lower))
-    block.factor = std::move(cholesky);
+  FactorPattern pattern(lower, node_groups(block.unknowns));
+  std::optional<SupernodalCholesky> cholesky = take_analysed(pattern, lower);
+  if (!cholesky) return;
+  if (cholesky->factor_flops() > settings.direct_max_flops) {  // a CG block: keep only its analysis
+    keep_analysed(std::move(pattern), std::move(*cholesky));
+    return;
+  }
+  if (!cholesky->factorize(lower)) return;  // not kept: its numeric state is partial
+  block.factor = std::move(cholesky);
+  block.pattern = std::move(pattern);
 }
 
 /// u(block) += the factor's solution for r(block).
@@ -86,7 +96,7 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
   SolverReport report;
   std::vector<Block> blocks;
   for (std::vector<int>& unknowns : decoupled_blocks(k, settings.decoupling_tolerance))
-    blocks.push_back(Block{std::move(unknowns), std::nullopt, false});
+    blocks.push_back(Block{std::move(unknowns), std::nullopt, std::nullopt, false});
   std::vector<int> position(static_cast<std::size_t>(k.cols()), -1);
   for (const Block& block : blocks)
     for (std::size_t i = 0; i < block.unknowns.size(); ++i)
@@ -115,6 +125,8 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
       if (block.factor) add_direct_solution(block, r, u);
     }
   }
+  for (Block& block : blocks)
+    if (block.factor) keep_analysed(std::move(*block.pattern), std::move(*block.factor));
   return report;
 }
 

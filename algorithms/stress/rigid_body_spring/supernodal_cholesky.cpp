@@ -138,6 +138,12 @@ bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::
 
 double SupernodalCholesky::factor_flops() const { return state_->common.fl; }
 
+std::size_t SupernodalCholesky::factor_bytes() const {
+  const cholmod_factor* l = state_->factor;
+  if (!l) return 0;
+  return l->xsize * sizeof(double) + l->ssize * sizeof(int) + 4 * l->n * sizeof(int);
+}
+
 bool SupernodalCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   State& s = *state_;
   if (!s.factor) return false;

@@ -33,6 +33,8 @@ class SupernodalCholesky {
   bool analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups = {});
   /// Floating-point operations the numeric factorisation of the analysed pattern takes.
   [[nodiscard]] double factor_flops() const;
+  /// Bytes the factor takes once factorised (values and supernode indices), 0 before analysis.
+  [[nodiscard]] std::size_t factor_bytes() const;
   /// Factorises `lower`, whose pattern must be the analysed one. False if K is not positive definite
   /// (to working precision) or CHOLMOD fails.
   bool factorize(const Eigen::SparseMatrix<double>& lower);
