@@ -8,9 +8,11 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -161,4 +163,77 @@ TEST_CASE("convex cap: loops a fan would cover wrongly are declined", "[cap]") {
     std::vector<Vec2> huge = regular_polygon(6, 1e130);
     CHECK(declined(huge, loop_edges(iota_order(6))));
   }
+}
+
+namespace {
+
+/// The independent truth: a loop is a strictly convex counter-clockwise polygon exactly when every
+/// corner lies strictly left of every edge it is not an end of (O(n^2) exact orientation tests).
+bool strictly_convex_by_all_pairs(const std::vector<Vec2>& points, const std::vector<std::int32_t>& order) {
+  const std::size_t n = order.size();
+  for (std::size_t e = 0; e < n; ++e) {
+    const Vec2& a = points[static_cast<std::size_t>(order[e])];
+    const Vec2& b = points[static_cast<std::size_t>(order[(e + 1) % n])];
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k == e || k == (e + 1) % n) continue;
+      if (shatter::orient2d(a, b, points[static_cast<std::size_t>(order[k])]) <= 0) return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace
+
+TEST_CASE("convex cap: accepted exactly when every corner is strictly left of every other edge", "[cap]") {
+  std::mt19937_64 rng(20261122);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  int accepted = 0, declined = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const int n = 3 + static_cast<int>(rng() % 30);
+    std::vector<double> angles(static_cast<std::size_t>(n));
+    for (double& a : angles) a = 2.0 * M_PI * unit(rng);
+    std::sort(angles.begin(), angles.end());
+    std::vector<Vec2> points;
+    const int kind = trial % 4;
+    for (int i = 0; i < n; ++i) {
+      const double t = angles[static_cast<std::size_t>(i)];
+      double r = 1.0;
+      if (kind == 1) r = 0.6 + 0.4 * unit(rng);                     // star-shaped: often reflex
+      if (kind == 2) r = 1.0 + 1e-15 * (unit(rng) - 0.5);           // convex up to round-off
+      points.emplace_back(r * std::cos(t), r * std::sin(t));
+    }
+    if (kind == 3) {  // points along the sides of a triangle: collinear in exact arithmetic or nearly
+      points.clear();
+      const Vec2 c[3] = {{0.0, 0.0}, {1.0, 0.1}, {0.3, 0.9}};
+      for (int side = 0; side < 3; ++side)
+        for (int k = 0; k < 1 + n / 3; ++k) {
+          const double s = static_cast<double>(k) / (1 + n / 3);
+          points.push_back((1.0 - s) * c[side] + s * c[(side + 1) % 3]);
+        }
+    }
+    std::vector<std::int32_t> order(points.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(rng() % order.size()), order.end());
+    const bool duplicate = [&] {
+      for (std::size_t i = 0; i < points.size(); ++i)
+        for (std::size_t j = i + 1; j < points.size(); ++j)
+          if (points[i] == points[j]) return true;
+      return false;
+    }();
+    if (duplicate) continue;
+    std::vector<Triangle> triangles;
+    const bool fanned = shatter::fan_convex_cap(points, loop_edges(order), triangles);
+    CHECK(fanned == strictly_convex_by_all_pairs(points, order));
+    if (fanned) {
+      ++accepted;
+      check_covers_outline(triangles, loop_edges(order));
+      for (const Triangle& t : triangles)
+        CHECK(shatter::orient2d(points[static_cast<std::size_t>(t[0])], points[static_cast<std::size_t>(t[1])],
+                                points[static_cast<std::size_t>(t[2])]) > 0);
+    } else {
+      ++declined;
+    }
+  }
+  CHECK(accepted > 500);  // both outcomes are exercised
+  CHECK(declined > 500);
 }

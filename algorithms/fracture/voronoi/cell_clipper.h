@@ -16,10 +16,11 @@
 /// passes through the triangle there); the same point serves both caps of that cell edge, and the
 /// inside stretches are found by walking along the edge, so both caps use the same segments. Corners
 /// of the cell inside the solid follow from the walks; a cell whose edges never meet the surface is
-/// wholly inside or outside, decided by an exact inside test of one corner. Each cap is triangulated
-/// by triangulate_cap. Whenever a step cannot be decided consistently (a point exactly on a plane,
-/// a corner of four planes, walks that disagree, a cap that does not close), `clip` returns false
-/// and writes nothing: the caller then cuts that cell with the sequential slicer.
+/// wholly inside or outside, decided by an exact inside test of one corner. Each cap is fanned when
+/// it is one convex loop (convex_cap.h), else triangulated by triangulate_cap. Whenever a step cannot
+/// be decided consistently (a point exactly on a plane, a corner of four planes, walks that disagree,
+/// a cap that does not close), `clip` returns false and writes nothing: the caller then cuts that
+/// cell with the sequential slicer.
 ///
 /// Most triangles lie wholly inside one cell. So each solid vertex first gets its owner: the site
 /// nearest to it when the next nearest is farther by a margin far above the round-off of squared
