@@ -43,9 +43,32 @@ BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& m) {
   s.stiffness = Matrix6::Zero();
   s.stiffness.topLeftCorner<3, 3>() = frame * translational.asDiagonal() * frame.transpose();
   s.stiffness.bottomRightCorner<3, 3>() = frame * rotational.asDiagonal() * frame.transpose();
-  s.map_a = motion_map(e.centroid - graph.nodes[static_cast<std::size_t>(e.a)].centroid, -1.0);
-  s.map_b = motion_map(e.centroid - graph.nodes[static_cast<std::size_t>(e.b)].centroid, +1.0);
+  s.lever_a = e.centroid - graph.nodes[static_cast<std::size_t>(e.a)].centroid;
+  s.lever_b = e.centroid - graph.nodes[static_cast<std::size_t>(e.b)].centroid;
+  s.map_a = motion_map(s.lever_a, -1.0);
+  s.map_b = motion_map(s.lever_b, +1.0);
   return s;
+}
+
+std::array<Matrix6, 4> bond_blocks(const BondSpring& s) {
+  // With map = sign [I, -R; 0, I] (R = [lever]x, R^T = -R) and stiffness = diag(T, Q):
+  // map_y^T stiffness map_x = sign_x sign_y [T, -T R_x; R_y T, Q - R_y T R_x].
+  const Eigen::Matrix3d t = s.stiffness.topLeftCorner<3, 3>();
+  const Eigen::Matrix3d q = s.stiffness.bottomRightCorner<3, 3>();
+  const Eigen::Matrix3d r[2] = {skew(s.lever_a), skew(s.lever_b)};
+  const Eigen::Matrix3d tr[2] = {t * r[0], t * r[1]};  // T R_x
+  const Eigen::Matrix3d rt[2] = {r[0] * t, r[1] * t};  // R_y T
+  std::array<Matrix6, 4> out;
+  for (int x = 0; x < 2; ++x)
+    for (int y = 0; y < 2; ++y) {
+      const double sign = x == y ? 1.0 : -1.0;  // sign_a = -1, sign_b = +1
+      Matrix6& k = out[static_cast<std::size_t>(2 * x + y)];
+      k.topLeftCorner<3, 3>() = sign * t;
+      k.topRightCorner<3, 3>() = -sign * tr[x];
+      k.bottomLeftCorner<3, 3>() = sign * rt[y];
+      k.bottomRightCorner<3, 3>() = sign * (q - rt[y] * r[x]);
+    }
+  return out;
 }
 
 BondForces bond_forces(const Bond& e, const BondSpring& s, const double* u_a, const double* u_b) {

@@ -9,6 +9,8 @@
 
 #include <Eigen/Core>
 
+#include <array>
+
 namespace shatter {
 
 /// Internal forces of one bond, in its frame; the forces b receives from a are minus these.
@@ -30,10 +32,18 @@ struct BondSpring {
   Matrix6 stiffness;   ///< N/m and N m/rad, block-diagonal (translation, rotation), global axes
   Matrix6 map_a;       ///< node a's 6 unknowns -> relative motion (sign -1)
   Matrix6 map_b;       ///< node b's 6 unknowns -> relative motion (sign +1)
+  Vec3 lever_a;        ///< bond centroid - centroid of a, m (map_a = -[I, -[lever_a]x; 0, I])
+  Vec3 lever_b;        ///< bond centroid - centroid of b, m (map_b = +[I, -[lever_b]x; 0, I])
 };
 
 /// The spring of `graph.bonds[bond]` for `material`.
 BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& material);
+
+/// The bond's four 6 x 6 stiffness blocks map_y^T stiffness map_x, indexed 2 x + y with x, y in
+/// {0: a, 1: b} (block 2 x + y couples node y's equations to node x's unknowns). Computed from the
+/// structure of the maps (identity and lever blocks) rather than as general 6 x 6 products, so that
+/// both assemblies (spring_system.cpp, graph_stiffness.cpp) use the very same numbers.
+std::array<Matrix6, 4> bond_blocks(const BondSpring& spring);
 
 /// The bond's internal forces from its end nodes' unknowns `u_a`, `u_b` (6 each: m, rad).
 BondForces bond_forces(const Bond& bond, const BondSpring& spring, const double* u_a, const double* u_b);

@@ -59,13 +59,10 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
   for (std::size_t b = 0; b < graph.bonds.size(); ++b) {
     const Bond& e = graph.bonds[b];
     const BondSpring& s = springs_[b] = bond_spring(graph, static_cast<int>(b), material);
-    const Matrix6* maps[2] = {&s.map_a, &s.map_b};
+    blocks_[b] = bond_blocks(s);
     const int ends[2] = {first_[static_cast<std::size_t>(e.a)], first_[static_cast<std::size_t>(e.b)]};
     for (int x = 0; x < 2; ++x)
-      for (int y = 0; y < 2; ++y) {
-        blocks_[b][static_cast<std::size_t>(2 * x + y)] = maps[y]->transpose() * s.stiffness * *maps[x];
-        slots_[b][static_cast<std::size_t>(2 * x + y)] = slot(ends[y], ends[x]);
-      }
+      for (int y = 0; y < 2; ++y) slots_[b][static_cast<std::size_t>(2 * x + y)] = slot(ends[y], ends[x]);
   }
 }
 

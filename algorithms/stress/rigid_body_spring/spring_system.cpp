@@ -95,11 +95,11 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
     springs[q] = bond_spring(graph, bonds[q], material);
-    const Matrix6* maps[2] = {&springs[q].map_a, &springs[q].map_b};
+    const std::array<Matrix6, 4> blocks = bond_blocks(springs[q]);
     const int ends[2] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
     for (int x = 0; x < 2; ++x)
       for (int y = 0; y < 2; ++y)
-        if (ends[x] >= 0 && ends[y] >= 0) add_block(ends[y], ends[x], maps[y]->transpose() * springs[q].stiffness * *maps[x]);
+        if (ends[x] >= 0 && ends[y] >= 0) add_block(ends[y], ends[x], blocks[static_cast<std::size_t>(2 * x + y)]);
   }
 
   Vector f(n), u(n);
