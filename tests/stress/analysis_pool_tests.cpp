@@ -1,8 +1,10 @@
-// The pool of analysed factors (analysis_pool.h): a reused analysis gives bit for bit the results of a
-// fresh one (the ordering and symbolic factor depend on the pattern alone), another pattern never
-// reuses, and the pool stays within its bounds.
+// The solver's reuse: the split and factors of a K solved before (linear_solve.h) and the pool of
+// analysed factors (analysis_pool.h). Reuse gives bit for bit the results of a fresh solve (the same K
+// gives the same factors; the ordering and symbolic factor depend on the pattern alone), another
+// pattern never reuses, and the pool stays within its bounds.
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
+#include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "tests/stress/structures.h"
 
@@ -37,29 +39,54 @@ Eigen::SparseMatrix<double> path_lower(int n) {
 
 }  // namespace
 
-TEST_CASE("analysis pool: a second evaluation of the same graph reuses the analysis, bit for bit", "[stress][von-mises]") {
+TEST_CASE("solver reuse: the same structure under other loads reuses split and factors, bit for bit", "[stress][von-mises]") {
   const SupportGraph g = block_wall(12, 9);
   const StrengthCriterionModel model(Criterion::von_mises);
-  forget_analysed();
-  const std::size_t before = analysed_reuses();
-  Result<StressResult> cold = model.evaluate(g, Loads{}, Material{});
-  REQUIRE(cold.ok());
-  CHECK(analysed_reuses() == before);  // nothing pooled yet
-  Result<StressResult> warm = model.evaluate(g, Loads{}, Material{});
+  Loads pushed;
+  pushed.point_loads.push_back(PointLoad{40, g.nodes[40].centroid, Vec3(3e4, 0.0, -1e4)});
+  forget_solver_reuse();
+  const std::size_t systems = solved_system_reuses();
+  Result<StressResult> first = model.evaluate(g, Loads{}, Material{});
+  REQUIRE(first.ok());
+  CHECK(solved_system_reuses() == systems);  // nothing kept yet
+  Result<StressResult> warm = model.evaluate(g, pushed, Material{});
   REQUIRE(warm.ok());
-  CHECK(analysed_reuses() > before);
+  CHECK(solved_system_reuses() == systems + 1);
+  forget_solver_reuse();
+  Result<StressResult> cold = model.evaluate(g, pushed, Material{});
+  REQUIRE(cold.ok());
   check_identical(*warm, *cold);
   CHECK(warm->report.residual < 1e-12);
+  CHECK(warm->displacements != first->displacements);  // the load did change the answer
+}
 
-  SECTION("another graph with as many nodes does not reuse it") {
+TEST_CASE("analysis pool: the same pattern with other stiffness values reuses the analysis, bit for bit", "[stress][von-mises]") {
+  const SupportGraph g = block_wall(12, 9);
+  const StrengthCriterionModel model(Criterion::von_mises);
+  Material stiffer;
+  stiffer.young_modulus *= 2.5;  // every value of K changes, its pattern does not
+  forget_solver_reuse();
+  REQUIRE(model.evaluate(g, Loads{}, Material{}).ok());
+  const std::size_t analyses = analysed_reuses(), systems = solved_system_reuses();
+  Result<StressResult> warm = model.evaluate(g, Loads{}, stiffer);
+  REQUIRE(warm.ok());
+  CHECK(analysed_reuses() > analyses);
+  CHECK(solved_system_reuses() == systems);
+  forget_solver_reuse();
+  Result<StressResult> cold = model.evaluate(g, Loads{}, stiffer);
+  REQUIRE(cold.ok());
+  check_identical(*warm, *cold);
+
+  SECTION("another graph with as many nodes reuses neither") {
     const SupportGraph other = block_wall(9, 12);  // the same node count, another pattern
     REQUIRE(other.node_count() == g.node_count());
-    const std::size_t reused = analysed_reuses();
-    Result<StressResult> first = model.evaluate(other, Loads{}, Material{});
+    const std::size_t reused = analysed_reuses(), solved = solved_system_reuses();
+    Result<StressResult> first = model.evaluate(other, Loads{}, stiffer);
     REQUIRE(first.ok());
     CHECK(analysed_reuses() == reused);
-    forget_analysed();
-    Result<StressResult> fresh = model.evaluate(other, Loads{}, Material{});
+    CHECK(solved_system_reuses() == solved);
+    forget_solver_reuse();
+    Result<StressResult> fresh = model.evaluate(other, Loads{}, stiffer);
     REQUIRE(fresh.ok());
     check_identical(*first, *fresh);
   }
@@ -71,20 +98,21 @@ TEST_CASE("analysis pool: a cascade run again reuses its analyses and breaks the
   Material weak;
   weak.tensile_strength = 2e4;
   const std::vector<int> hole = g.node_bonds[static_cast<std::size_t>(12 + 6)];  // second row, middle
-  forget_analysed();
+  forget_solver_reuse();
   Result<PropagationResult> cold = propagate(model, g, Loads{}, weak, hole);
   REQUIRE(cold.ok());
   REQUIRE(cold->rounds >= 2);  // the reused cascade pattern is in play
-  const std::size_t before = analysed_reuses();
+  const std::size_t before = analysed_reuses(), solved = solved_system_reuses();
   Result<PropagationResult> warm = propagate(model, g, Loads{}, weak, hole);
   REQUIRE(warm.ok());
-  CHECK(analysed_reuses() > before);
+  CHECK(analysed_reuses() > before);     // the cascade's own pattern (CascadeSolver)
+  CHECK(solved_system_reuses() > solved);  // the first round's components, solved as before
   CHECK(warm->break_order == cold->break_order);
   check_identical(warm->result, cold->result);
 }
 
 TEST_CASE("analysis pool: bounded, oldest pattern dropped first", "[stress]") {
-  forget_analysed();
+  forget_solver_reuse();
   const std::size_t start = analysed_reuses();
   const auto analysed = [](int n) {
     const Eigen::SparseMatrix<double> lower = path_lower(n);

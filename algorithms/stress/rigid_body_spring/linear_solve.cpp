@@ -7,6 +7,7 @@
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -86,17 +87,108 @@ void add_direct_solution(const Block& block, const Vector& r, Vector& u) {
   for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] += x[static_cast<Eigen::Index>(i)];
 }
 
+/// A system solved before on this thread: K exactly (pattern and values), the settings that shaped
+/// its split, and its blocks with their factors. Solving with the same K again (the same structure
+/// under other loads) needs neither the split nor a factorisation: the factors are those the same K
+/// would give again, so the solution is bit for bit that of a fresh solve.
+struct SolvedSystem {
+  std::vector<int> outer, inner;
+  std::vector<double> values;
+  double decoupling_tolerance = 0.0, direct_max_flops = 0.0;
+  std::vector<Block> blocks;
+  std::size_t bytes = 0;
+};
+
+constexpr std::size_t kMaxSolvedSystems = 4;
+
+struct SolvedSystems {
+  std::vector<SolvedSystem> entries;  // oldest first
+  std::size_t bytes = 0;
+  std::size_t reuses = 0;
+};
+
+SolvedSystems& solved_systems() {
+  thread_local SolvedSystems systems;
+  return systems;
+}
+
+bool same_pattern(const SolvedSystem& e, const SparseMatrix& k, const SpringSolverSettings& settings) {
+  return e.outer.size() == static_cast<std::size_t>(k.cols()) + 1 && e.inner.size() == static_cast<std::size_t>(k.nonZeros()) &&
+         e.decoupling_tolerance == settings.decoupling_tolerance && e.direct_max_flops == settings.direct_max_flops &&
+         std::equal(e.outer.begin(), e.outer.end(), k.outerIndexPtr()) &&
+         std::equal(e.inner.begin(), e.inner.end(), k.innerIndexPtr());
+}
+
+/// Hands a block's factor to the analysis pool (its analysis stays useful for the same pattern).
+void pool_factor(Block& block) {
+  if (block.factor) keep_analysed(std::move(*block.pattern), std::move(*block.factor));
+  block.factor.reset();
+}
+
+/// The blocks of `k` as solved before (moved out of the store), or none. A stored system with K's
+/// pattern but other values (the same structure, other stiffness) is dropped and its factors go to
+/// the analysis pool, where this solve's factorisations find their analyses.
+std::optional<std::vector<Block>> take_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& settings) {
+  SolvedSystems& store = solved_systems();
+  for (auto it = store.entries.begin(); it != store.entries.end(); ++it) {
+    if (!same_pattern(*it, k, settings)) continue;
+    const bool same_values = std::equal(it->values.begin(), it->values.end(), k.valuePtr());
+    std::vector<Block> blocks = std::move(it->blocks);
+    store.bytes -= it->bytes;
+    store.entries.erase(it);
+    if (same_values) {
+      ++store.reuses;
+      return blocks;
+    }
+    for (Block& block : blocks) pool_factor(block);
+    return std::nullopt;
+  }
+  return std::nullopt;
+}
+
+/// Stores `blocks`, solved with `k`; the oldest systems leave (their factors to the analysis pool)
+/// while the store holds kMaxSolvedSystems or would pass kMaxPooledBytes.
+void keep_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& settings, std::vector<Block> blocks) {
+  std::size_t bytes = static_cast<std::size_t>(k.nonZeros()) * (sizeof(double) + sizeof(int));
+  for (const Block& block : blocks) bytes += block.factor ? block.factor->factor_bytes() : 0;
+  if (bytes > kMaxPooledBytes) {
+    for (Block& block : blocks) pool_factor(block);
+    return;
+  }
+  SolvedSystems& store = solved_systems();
+  while (!store.entries.empty() && (store.entries.size() >= kMaxSolvedSystems || store.bytes + bytes > kMaxPooledBytes)) {
+    for (Block& block : store.entries.front().blocks) pool_factor(block);
+    store.bytes -= store.entries.front().bytes;
+    store.entries.erase(store.entries.begin());
+  }
+  SolvedSystem e;
+  e.outer.assign(k.outerIndexPtr(), k.outerIndexPtr() + k.cols() + 1);
+  e.inner.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
+  e.values.assign(k.valuePtr(), k.valuePtr() + k.nonZeros());
+  e.decoupling_tolerance = settings.decoupling_tolerance;
+  e.direct_max_flops = settings.direct_max_flops;
+  e.blocks = std::move(blocks);
+  e.bytes = bytes;
+  store.bytes += bytes;
+  store.entries.push_back(std::move(e));
+}
+
 /// Each loaded block is solved on its own (direct, or CG when its factorisation is too costly); a
 /// block with no load starts at u = 0, exact but for the dropped couplings. Refinement against the
 /// full K then corrects every direct block, factorising an unloaded one only if its residual is above
 /// the round-off of f itself (machine epsilon |f|): the in-plane half of a wall leaves ~1e-19 |f| on
 /// the out-of-plane half, never factorised, while an axis-aligned cantilever leaves 1e-14 |f| on its
-/// axial unknowns, whose correction keeps the axial force at ~1e-26 N rather than 1e-11 N.
+/// axial unknowns, whose correction keeps the axial force at ~1e-26 N rather than 1e-11 N. A K solved
+/// before on this thread brings its blocks and factors along (SolvedSystem).
 SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
   SolverReport report;
   std::vector<Block> blocks;
-  for (std::vector<int>& unknowns : decoupled_blocks(k, settings.decoupling_tolerance))
-    blocks.push_back(Block{std::move(unknowns), std::nullopt, std::nullopt, false});
+  if (std::optional<std::vector<Block>> solved = take_solved_blocks(k, settings)) {
+    blocks = std::move(*solved);
+  } else {
+    for (std::vector<int>& unknowns : decoupled_blocks(k, settings.decoupling_tolerance))
+      blocks.push_back(Block{std::move(unknowns), std::nullopt, std::nullopt, false});
+  }
   std::vector<int> position(static_cast<std::size_t>(k.cols()), -1);
   for (const Block& block : blocks)
     for (std::size_t i = 0; i < block.unknowns.size(); ++i)
@@ -125,12 +217,20 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
       if (block.factor) add_direct_solution(block, r, u);
     }
   }
-  for (Block& block : blocks)
-    if (block.factor) keep_analysed(std::move(*block.pattern), std::move(*block.factor));
+  keep_solved_blocks(k, settings, std::move(blocks));
   return report;
 }
 
 }  // namespace
+
+void forget_solver_reuse() {
+  SolvedSystems& store = solved_systems();
+  store.entries.clear();
+  store.bytes = 0;
+  forget_analysed();
+}
+
+std::size_t solved_system_reuses() { return solved_systems().reuses; }
 
 SolverReport solve_linear(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
   if (!u.allFinite()) u.setZero();

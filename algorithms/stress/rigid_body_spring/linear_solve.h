@@ -1,6 +1,8 @@
 #pragma once
 /// The linear solve K u = f of one anchored component: split into decoupled blocks, each block solved
 /// by supernodal Cholesky when its factorisation is cheap enough, else by Jacobi-preconditioned CG.
+/// The split and the factors of the last few K solved on a thread are kept: the same K under other
+/// loads (a structure evaluated again) only pays the triangular solves.
 
 #include "algorithms/stress/stress_model.h"
 
@@ -26,5 +28,12 @@ struct SpringSolverSettings {
 /// |f - k u| / |f| against the full `k`, iterations, and convergence.
 SolverReport solve_linear(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                           const SpringSolverSettings& settings);
+
+/// Empties this thread's solved systems (a K solved again reuses its split and factors) and its
+/// analysis pool (analysis_pool.h): the next solves start cold (benchmarks of first solves, tests).
+void forget_solver_reuse();
+
+/// Solves on this thread so far that found their K already solved (tests).
+std::size_t solved_system_reuses();
 
 }  // namespace shatter
