@@ -79,6 +79,10 @@ class CellClipper {
     int into;
   };
 
+  /// (a, b) as one 64-bit key, a in the high half.
+  static std::uint64_t pair_key(std::int32_t a, std::int32_t b) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+  }
   void find_owners(std::span<const Vec3> sites);
   void copy_triangle(std::size_t f);
   bool clip_triangle(std::size_t f);
