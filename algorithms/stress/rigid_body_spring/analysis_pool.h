@@ -24,7 +24,9 @@
 namespace shatter {
 
 inline constexpr std::size_t kMaxPooledFactors = 8;
-inline constexpr std::size_t kMaxPooledBytes = std::size_t{256} << 20;
+/// Per thread and per store (this pool, and the solved systems of linear_solve.h): at most 256 MiB
+/// kept by one thread between solves; a 9,940-bond wall's system and factor take about 40 MiB.
+inline constexpr std::size_t kMaxPooledBytes = std::size_t{128} << 20;
 
 /// The exact pattern a factor is analysed for: column starts, row indices and node groups.
 struct FactorPattern {
