@@ -4,9 +4,10 @@
 /// Design note: the ordering (AMD) and the symbolic factorisation depend only on the pattern of the
 /// lower triangle and on the node groups, so a factor analysed for a pattern serves every later
 /// matrix with the very same pattern, and its numeric factorisation gives bit for bit what a fresh
-/// analysis would. A game evaluates the same support graph again and again (every impact, every
-/// change of load), and a cascade's reused pattern (cascade_solver.h) is that of the intact graph
-/// whatever broke. The pool belongs to the calling thread (no locking); a factor is used by one solve
+/// analysis would. The same structure under new loads reuses its whole factor (the solved systems of
+/// linear_solve.h); this pool serves the same pattern with other values (another material, a system
+/// dropped from that store) and a cascade run again, whose reused pattern (cascade_solver.h) is that
+/// of the intact graph whatever broke. The pool belongs to the calling thread (no locking); a factor is used by one solve
 /// at a time: `take_analysed` hands it out and removes it, `keep_analysed` puts it back. It is bounded
 /// (kMaxPooledFactors factors and kMaxPooledBytes of factor storage; the least recently kept goes
 /// first), and a pattern is matched by its whole arrays, never by a hash alone.
@@ -24,8 +25,8 @@
 namespace shatter {
 
 inline constexpr std::size_t kMaxPooledFactors = 8;
-/// Per thread and per store (this pool, and the solved systems of linear_solve.h): at most 256 MiB
-/// kept by one thread between solves; a 9,940-bond wall's system and factor take about 40 MiB.
+/// Bytes kept per thread by this pool, and again by the solved systems of linear_solve.h (so at most
+/// 256 MiB per thread in all); a 9,940-bond wall's system and factor take about 40 MiB.
 inline constexpr std::size_t kMaxPooledBytes = std::size_t{128} << 20;
 
 /// The exact pattern a factor is analysed for: column starts, row indices and node groups.
