@@ -1,5 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 
+#include "algorithms/stress/rigid_body_spring/bounded_store.h"
+
 #include <algorithm>
 #include <utility>
 
@@ -15,17 +17,11 @@ std::uint64_t mix(std::uint64_t h, const std::vector<int>& values) {
 struct Entry {
   FactorPattern pattern;
   SupernodalCholesky factor;
-  std::size_t bytes;
-};
-
-struct Pool {
-  std::vector<Entry> entries;  // oldest first
   std::size_t bytes = 0;
-  std::size_t reuses = 0;
 };
 
-Pool& pool() {
-  thread_local Pool p;
+BoundedStore<Entry>& pool() {
+  thread_local BoundedStore<Entry> p(kMaxPooledFactors, kMaxPooledBytes);
   return p;
 }
 
@@ -39,15 +35,11 @@ FactorPattern::FactorPattern(const Eigen::SparseMatrix<double>& lower, std::span
 }
 
 std::optional<SupernodalCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower) {
-  Pool& p = pool();
-  const auto found = std::find_if(p.entries.begin(), p.entries.end(),
-                                  [&](const Entry& e) { return e.pattern.hash == pattern.hash && e.pattern == pattern; });
-  if (found != p.entries.end()) {
-    SupernodalCholesky factor = std::move(found->factor);
-    p.bytes -= found->bytes;
-    p.entries.erase(found);
+  BoundedStore<Entry>& p = pool();
+  if (std::optional<Entry> found =
+          p.take([&](const Entry& e) { return e.pattern.hash == pattern.hash && e.pattern == pattern; })) {
     ++p.reuses;
-    return factor;
+    return std::move(found->factor);
   }
   SupernodalCholesky factor;
   if (!factor.analyze(lower, pattern.groups)) return std::nullopt;
@@ -55,22 +47,11 @@ std::optional<SupernodalCholesky> take_analysed(const FactorPattern& pattern, co
 }
 
 void keep_analysed(FactorPattern pattern, SupernodalCholesky factor) {
-  Pool& p = pool();
   const std::size_t bytes = factor.factor_bytes() + sizeof(int) * (pattern.outer.size() + pattern.inner.size() + pattern.groups.size());
-  if (bytes > kMaxPooledBytes) return;
-  while (!p.entries.empty() && (p.entries.size() >= kMaxPooledFactors || p.bytes + bytes > kMaxPooledBytes)) {
-    p.bytes -= p.entries.front().bytes;
-    p.entries.erase(p.entries.begin());
-  }
-  p.bytes += bytes;
-  p.entries.push_back(Entry{std::move(pattern), std::move(factor), bytes});
+  pool().keep(Entry{std::move(pattern), std::move(factor), bytes}, [](Entry&) {});
 }
 
-void forget_analysed() {
-  Pool& p = pool();
-  p.entries.clear();
-  p.bytes = 0;
-}
+void forget_analysed() { pool().clear(); }
 
 std::size_t analysed_reuses() { return pool().reuses; }
 

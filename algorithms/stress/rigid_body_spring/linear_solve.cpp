@@ -1,6 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
+#include "algorithms/stress/rigid_body_spring/bounded_store.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
@@ -101,14 +102,8 @@ struct SolvedSystem {
 
 constexpr std::size_t kMaxSolvedSystems = 4;
 
-struct SolvedSystems {
-  std::vector<SolvedSystem> entries;  // oldest first
-  std::size_t bytes = 0;
-  std::size_t reuses = 0;
-};
-
-SolvedSystems& solved_systems() {
-  thread_local SolvedSystems systems;
+BoundedStore<SolvedSystem>& solved_systems() {
+  thread_local BoundedStore<SolvedSystem> systems(kMaxSolvedSystems, kMaxPooledBytes);
   return systems;
 }
 
@@ -129,20 +124,14 @@ void pool_factor(Block& block) {
 /// pattern but other values (the same structure, other stiffness) is dropped and its factors go to
 /// the analysis pool, where this solve's factorisations find their analyses.
 std::optional<std::vector<Block>> take_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& settings) {
-  SolvedSystems& store = solved_systems();
-  for (auto it = store.entries.begin(); it != store.entries.end(); ++it) {
-    if (!same_pattern(*it, k, settings)) continue;
-    const bool same_values = std::equal(it->values.begin(), it->values.end(), k.valuePtr());
-    std::vector<Block> blocks = std::move(it->blocks);
-    store.bytes -= it->bytes;
-    store.entries.erase(it);
-    if (same_values) {
-      ++store.reuses;
-      return blocks;
-    }
-    for (Block& block : blocks) pool_factor(block);
-    return std::nullopt;
+  BoundedStore<SolvedSystem>& store = solved_systems();
+  std::optional<SolvedSystem> found = store.take([&](const SolvedSystem& e) { return same_pattern(e, k, settings); });
+  if (!found) return std::nullopt;
+  if (std::equal(found->values.begin(), found->values.end(), k.valuePtr())) {
+    ++store.reuses;
+    return std::move(found->blocks);
   }
+  for (Block& block : found->blocks) pool_factor(block);
   return std::nullopt;
 }
 
@@ -155,12 +144,6 @@ void keep_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& setti
     for (Block& block : blocks) pool_factor(block);
     return;
   }
-  SolvedSystems& store = solved_systems();
-  while (!store.entries.empty() && (store.entries.size() >= kMaxSolvedSystems || store.bytes + bytes > kMaxPooledBytes)) {
-    for (Block& block : store.entries.front().blocks) pool_factor(block);
-    store.bytes -= store.entries.front().bytes;
-    store.entries.erase(store.entries.begin());
-  }
   SolvedSystem e;
   e.outer.assign(k.outerIndexPtr(), k.outerIndexPtr() + k.cols() + 1);
   e.inner.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
@@ -169,8 +152,9 @@ void keep_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& setti
   e.direct_max_flops = settings.direct_max_flops;
   e.blocks = std::move(blocks);
   e.bytes = bytes;
-  store.bytes += bytes;
-  store.entries.push_back(std::move(e));
+  solved_systems().keep(std::move(e), [](SolvedSystem& dropped) {
+    for (Block& block : dropped.blocks) pool_factor(block);
+  });
 }
 
 /// Each loaded block is solved on its own (direct, or CG when its factorisation is too costly); a
@@ -224,9 +208,7 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
 }  // namespace
 
 void forget_solver_reuse() {
-  SolvedSystems& store = solved_systems();
-  store.entries.clear();
-  store.bytes = 0;
+  solved_systems().clear();
   forget_analysed();
 }
 
