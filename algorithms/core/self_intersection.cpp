@@ -1,9 +1,11 @@
 #include "algorithms/core/self_intersection.h"
 
+#include "algorithms/core/height_field_stars.h"
 #include "algorithms/core/mesh_fingerprint.h"
 #include "algorithms/core/predicates.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <mutex>
@@ -190,23 +192,42 @@ struct TriangleRecord {
 };
 
 /// One triangle in one grid cell, packed so that the pair loop over a cell reads memory in order:
-/// the box rounded outwards to float (an overlap test that may pass more pairs, never fewer) and
-/// the lowest cell of the box.
+/// the box rounded outwards to float (an overlap test that may pass more pairs, never fewer), the
+/// corners as keys (the index of a corner whose star is a height field, height_field_stars.h, else
+/// the index's complement, which is negative and matches no key), and the axes along which the box
+/// starts in this cell (bit k: the box's lowest cell has this cell's coordinate k).
 struct CellEntry {
   std::array<float, 3> min;
   std::array<float, 3> max;
-  std::array<int, 3> low;
+  std::array<std::int32_t, 3> keys;
   std::int32_t triangle;
+  std::uint32_t home_axes;
 };
+
+/// Each pair of triangles is tested once, in the cell of the lower corner of their boxes' overlap:
+/// the cell where, along every axis, one of the two boxes starts. So a cell owns a pair exactly when
+/// their home axes together are all three, and pairs of the other buckets are not even looked at.
+constexpr std::uint32_t kAllAxes = 7;
+
+/// The float next to f (finite) away from zero, or towards it; the smallest subnormal of the given
+/// sign after zero. Bit steps: std::nextafter is a library call, and this runs six times per triangle.
+float float_step(float f, bool away_from_zero, bool negative_at_zero) {
+  if (f == 0.0f) {
+    const float tiny = std::numeric_limits<float>::denorm_min();
+    return negative_at_zero ? -tiny : tiny;
+  }
+  const auto bits = std::bit_cast<std::uint32_t>(f);
+  return std::bit_cast<float>(away_from_zero ? bits + 1 : bits - 1);
+}
 
 float round_down(double x) {
   const auto f = static_cast<float>(x);
-  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+  return static_cast<double>(f) > x ? float_step(f, f < 0.0f, true) : f;
 }
 
 float round_up(double x) {
   const auto f = static_cast<float>(x);
-  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+  return static_cast<double>(f) < x ? float_step(f, f > 0.0f, false) : f;
 }
 
 /// Sign of orient3d(a, b, c, p) for the record's triangle (a, b, c): the plane in double decides
@@ -216,8 +237,10 @@ int side(const TriangleRecord& t, const Mesh& mesh, const Vec3& p) {
   const Vec3 g = p - t.origin;
   const double d = t.normal.dot(g);
   const double bound = 4e-15 * t.scale * g.cwiseAbs().sum();
-  if (d > bound) return -1;  // orient3d is positive on the side opposite to the normal
-  if (-d > bound) return 1;
+  if (bound >= 1e-280) {  // relative bounds fail among subnormal products: the exact predicate decides
+    if (d > bound) return -1;  // orient3d is positive on the side opposite to the normal
+    if (-d > bound) return 1;
+  }
   const Triangle& c = t.corners;
   return orient3d(mesh.vertices[static_cast<std::size_t>(c[0])], mesh.vertices[static_cast<std::size_t>(c[1])],
                   mesh.vertices[static_cast<std::size_t>(c[2])], p);
@@ -288,44 +311,65 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
         for (int x = r.low[0]; x <= high[f][0]; ++x) ++start[index(x, y, z) + 1];
   }
   for (std::size_t c = 1; c <= cells; ++c) start[c] += start[c - 1];
+  const std::vector<std::uint8_t> height_field = height_field_stars(mesh);
   std::vector<CellEntry> members(static_cast<std::size_t>(start[cells]));
   std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < n; ++f) {
     const TriangleRecord& r = records[f];
     CellEntry entry{};
     for (int k = 0; k < 3; ++k) entry.min[k] = round_down(r.box.min[k]), entry.max[k] = round_up(r.box.max[k]);
-    entry.low = r.low;
     entry.triangle = static_cast<std::int32_t>(f);
+    for (int k = 0; k < 3; ++k) entry.keys[k] = height_field[static_cast<std::size_t>(r.corners[k])] ? r.corners[k] : ~r.corners[k];
     for (int z = r.low[2]; z <= high[f][2]; ++z)
       for (int y = r.low[1]; y <= high[f][1]; ++y)
-        for (int x = r.low[0]; x <= high[f][0]; ++x) members[static_cast<std::size_t>(fill[index(x, y, z)]++)] = entry;
+        for (int x = r.low[0]; x <= high[f][0]; ++x) {
+          entry.home_axes = static_cast<std::uint32_t>(x == r.low[0]) | static_cast<std::uint32_t>(y == r.low[1]) << 1 |
+                            static_cast<std::uint32_t>(z == r.low[2]) << 2;
+          members[static_cast<std::size_t>(fill[index(x, y, z)]++)] = entry;
+        }
   }
   const auto corners = [&](const TriangleRecord& r) {
     return Corners{mesh.vertices[static_cast<std::size_t>(r.corners[0])], mesh.vertices[static_cast<std::size_t>(r.corners[1])],
                    mesh.vertices[static_cast<std::size_t>(r.corners[2])]};
   };
   std::vector<std::array<std::int32_t, 2>> candidates;
+  std::vector<CellEntry> sorted;  // one cell's members, by home axes
+  // The pairs of triangles in boxes `a` and `b` (all pairs within `a` when they are the same) whose
+  // boxes overlap and that share no height-field corner, gathered without a branch per pair (which
+  // way the tests go is close to a coin toss, and mispredictions were most of the loop's time).
+  const auto gather = [&candidates](const CellEntry* a_first, const CellEntry* a_last, const CellEntry* b_first,
+                                    const CellEntry* b_last, bool same) {
+    for (const CellEntry* ea = a_first; ea != a_last; ++ea) {
+      for (const CellEntry* eb = same ? ea + 1 : b_first; eb != b_last; ++eb) {
+        const bool overlap = (ea->min[0] <= eb->max[0]) & (eb->min[0] <= ea->max[0]) & (ea->min[1] <= eb->max[1]) &
+                             (eb->min[1] <= ea->max[1]) & (ea->min[2] <= eb->max[2]) & (eb->min[2] <= ea->max[2]);
+        bool in_flat_star = false;  // such a pair meets only where it shares corners
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) in_flat_star |= (ea->keys[i] == eb->keys[j]) & (ea->keys[i] >= 0);
+        candidates.push_back({ea->triangle, eb->triangle});
+        candidates.resize(candidates.size() - static_cast<std::size_t>(!(overlap & !in_flat_star)));
+      }
+    }
+  };
   for (int z = 0; z < dims[2]; ++z)
     for (int y = 0; y < dims[1]; ++y)
       for (int x = 0; x < dims[0]; ++x) {
         const std::size_t c = index(x, y, z);
         const CellEntry* first = members.data() + start[c];
         const CellEntry* last = members.data() + start[c + 1];
-        // The pairs this cell owns with overlapping boxes, gathered without a branch per pair (which
-        // way the two tests go is close to a coin toss, and mispredictions were most of the loop's
-        // time), then tested.
+        if (last - first < 2) continue;
+        std::array<std::int32_t, kAllAxes + 2> bucket{};
+        for (const CellEntry* e = first; e != last; ++e) ++bucket[e->home_axes + 1];
+        for (std::uint32_t h = 1; h <= kAllAxes + 1; ++h) bucket[h] += bucket[h - 1];
+        sorted.resize(static_cast<std::size_t>(last - first));
+        std::array<std::int32_t, kAllAxes + 1> next{};
+        std::copy(bucket.begin(), bucket.end() - 1, next.begin());
+        for (const CellEntry* e = first; e != last; ++e) sorted[static_cast<std::size_t>(next[e->home_axes]++)] = *e;
+        const auto begin_of = [&](std::uint32_t h) { return sorted.data() + bucket[h]; };
         candidates.clear();
-        for (const CellEntry* ea = first; ea != last; ++ea) {
-          for (const CellEntry* eb = ea + 1; eb != last; ++eb) {
-            // Each pair once: in the cell of the lower corner of the boxes' overlap.
-            const bool owned = (std::max(ea->low[0], eb->low[0]) == x) & (std::max(ea->low[1], eb->low[1]) == y) &
-                               (std::max(ea->low[2], eb->low[2]) == z);
-            const bool overlap = (ea->min[0] <= eb->max[0]) & (eb->min[0] <= ea->max[0]) & (ea->min[1] <= eb->max[1]) &
-                                 (eb->min[1] <= ea->max[1]) & (ea->min[2] <= eb->max[2]) & (eb->min[2] <= ea->max[2]);
-            candidates.push_back({ea->triangle, eb->triangle});
-            candidates.resize(candidates.size() - static_cast<std::size_t>(!(owned & overlap)));
-          }
-        }
+        for (std::uint32_t h = 0; h <= kAllAxes; ++h)
+          for (std::uint32_t g = h; g <= kAllAxes; ++g)
+            if ((h | g) == kAllAxes) gather(begin_of(h), begin_of(h + 1), begin_of(g), begin_of(g + 1), h == g);
         for (const auto& [a, b] : candidates) {
           const TriangleRecord& ra = records[static_cast<std::size_t>(a)];
           const TriangleRecord& rb = records[static_cast<std::size_t>(b)];

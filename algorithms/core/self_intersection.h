@@ -7,8 +7,9 @@
 /// refuse such input up front, as the exact reference does (CGAL's does_self_intersect). The test
 /// has to cost little next to a fracture: triangles are binned in a uniform grid whose cell is about
 /// the mean triangle's extent, each pair of triangles sharing a cell with overlapping boxes is tested
-/// once (in the cell of the lower corner of the boxes' overlap), and most pairs are settled by three
-/// plane-side tests. Every decision is an exact predicate (orient3d, orient2d) on the stored doubles.
+/// once (in the cell of the lower corner of the boxes' overlap). A pair that shares a vertex whose
+/// star is a height field (height_field_stars.h, on smooth meshes nearly every vertex and 97 % of the
+/// pairs) needs no test; most other pairs are settled by three plane-side tests. Every decision is an exact predicate (orient3d, orient2d) on the stored doubles.
 /// Corners count as shared when their positions are equal (not only their indices), so sheets split
 /// at a pinched vertex, which touch there, are not reported.
 

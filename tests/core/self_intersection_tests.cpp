@@ -11,6 +11,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <numbers>
+
 using namespace shatter;
 
 namespace {
@@ -149,6 +151,30 @@ TEST_CASE("self-intersection: the grid finds what testing every pair finds", "[s
   // Both answers occur, so the comparison means something either way.
   CHECK(found >= 10);
   CHECK(clean >= 10);
+}
+
+TEST_CASE("self-intersection: local folds, found among neighbours as testing every pair finds them", "[self-intersection]") {
+  // Vertices of a sphere moved by up to twice the edge length: stars fold over (neighbours meet)
+  // or stop being height fields without meeting. The pairs sharing a height-field vertex are the
+  // ones the grid skips; testing every pair says whether skipping them lost an intersection.
+  SplitMix64 random(29);
+  int found = 0;
+  int clean = 0;
+  for (int trial = 0; trial < 120; ++trial) {
+    INFO("trial " << trial);
+    Mesh mesh = make_sphere(1.0, 16, 8);
+    const double edge = 2 * std::numbers::pi / 16;
+    const int moved = 1 + trial % 4;
+    for (int k = 0; k < moved; ++k) {
+      Vec3& v = mesh.vertices[static_cast<std::size_t>(random.uniform() * 0.999 * mesh.vertices.size())];
+      v += random.uniform(0.1, 2.0) * edge * random.unit_vector();
+    }
+    const bool expected = any_pair_intersects(mesh);
+    CHECK(find_self_intersection(mesh).has_value() == expected);
+    (expected ? found : clean) += 1;
+  }
+  CHECK(found >= 20);
+  CHECK(clean >= 20);
 }
 
 TEST_CASE("self-intersection: a remembered clean verdict never hides a changed mesh", "[self-intersection]") {
