@@ -1,5 +1,6 @@
 #include "algorithms/core/height_field_stars.h"
 
+#include "algorithms/core/axis_projection.h"
 #include "algorithms/core/predicates.h"
 
 #include <array>
@@ -17,9 +18,6 @@ struct LinkEdge {
   std::int32_t to;
   int orientation;
 };
-
-/// Drops coordinate `axis` (the projection along that axis).
-Vec2 drop(const Vec3& p, int axis) { return {p[(axis + 1) % 3], p[(axis + 2) % 3]}; }
 
 /// Direction from c to p lies in the half-plane [0, pi) of angles: y above c, or on c's line with x to
 /// the right. Exact: compares coordinates only.
@@ -44,7 +42,7 @@ int projected_orientation(const Vec3& a, const Vec3& b, const Vec3& c, int axis)
     if (det > bound) return 1;
     if (-det > bound) return -1;
   }
-  return orient2d(drop(a, axis), drop(b, axis), drop(c, axis));
+  return orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
 }
 
 /// Stamps per vertex for the permutation test, kept across vertices: `left[x] == stamp` when some
@@ -78,12 +76,12 @@ bool star_is_height_field(const Mesh& mesh, std::size_t v, int axis, std::span<c
   for (const LinkEdge& e : edges)
     if (e.orientation != orientation) return false;
   if (!is_permutation_of_link(edges, static_cast<std::int32_t>(v), marks)) return false;
-  const Vec2 c = drop(mesh.vertices[v], axis);
+  const Vec2 c = drop_axis(mesh.vertices[v], axis);
   int windings = 0;
   for (const LinkEdge& e : edges) {
     // Counter-clockwise turns cross +x from the lower half to the upper, clockwise ones the other way.
-    const bool a_up = upper_half(c, drop(mesh.vertices[static_cast<std::size_t>(e.from)], axis));
-    const bool b_up = upper_half(c, drop(mesh.vertices[static_cast<std::size_t>(e.to)], axis));
+    const bool a_up = upper_half(c, drop_axis(mesh.vertices[static_cast<std::size_t>(e.from)], axis));
+    const bool b_up = upper_half(c, drop_axis(mesh.vertices[static_cast<std::size_t>(e.to)], axis));
     windings += orientation > 0 ? (!a_up && b_up) : (a_up && !b_up);
   }
   return windings == 1;
@@ -106,8 +104,7 @@ std::vector<std::uint8_t> height_field_stars(const Mesh& mesh) {
   }
   std::vector<std::uint8_t> axis(vertex_count);
   for (std::size_t v = 0; v < vertex_count; ++v) {
-    const Vec3 m = normal_sum[v].cwiseAbs();
-    axis[v] = static_cast<std::uint8_t>(m.x() >= m.y() ? (m.x() >= m.z() ? 0 : 2) : (m.y() >= m.z() ? 1 : 2));
+    axis[v] = static_cast<std::uint8_t>(dominant_axis(normal_sum[v]));
     start[v + 1] += start[v];
   }
   std::vector<LinkEdge> links(static_cast<std::size_t>(start[vertex_count]));

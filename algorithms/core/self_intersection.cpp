@@ -1,5 +1,6 @@
 #include "algorithms/core/self_intersection.h"
 
+#include "algorithms/core/axis_projection.h"
 #include "algorithms/core/height_field_stars.h"
 #include "algorithms/core/mesh_fingerprint.h"
 #include "algorithms/core/predicates.h"
@@ -18,14 +19,10 @@ namespace {
 
 using Corners = std::array<Vec3, 3>;
 
-/// Drops coordinate `axis`: a projection of a plane that keeps the orientation of every triple of
-/// points of that plane consistent, when the plane is not parallel to the axis.
-Vec2 drop(const Vec3& p, int axis) { return {p[(axis + 1) % 3], p[(axis + 2) % 3]}; }
-
 /// An axis along which triangle t does not project to a segment (it is not degenerate), or -1.
 int projection_axis(const Corners& t) {
   for (int axis = 2; axis >= 0; --axis)
-    if (orient2d(drop(t[0], axis), drop(t[1], axis), drop(t[2], axis)) != 0) return axis;
+    if (orient2d(drop_axis(t[0], axis), drop_axis(t[1], axis), drop_axis(t[2], axis)) != 0) return axis;
   return -1;
 }
 
@@ -55,7 +52,7 @@ bool in_triangle(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& x) {
 bool coplanar_triangles_meet(const Corners& t, const Corners& u, int axis) {
   std::array<Vec2, 3> a;
   std::array<Vec2, 3> b;
-  for (int k = 0; k < 3; ++k) a[k] = drop(t[k], axis), b[k] = drop(u[k], axis);
+  for (int k = 0; k < 3; ++k) a[k] = drop_axis(t[k], axis), b[k] = drop_axis(u[k], axis);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
       if (segments_meet(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3])) return true;
@@ -70,8 +67,8 @@ bool segment_meets_triangle(const Vec3& p, const Vec3& q, const Corners& t) {
   if (sp * sq > 0) return false;
   if (sp == 0 && sq == 0) {  // the segment lies in the triangle's plane
     const int axis = projection_axis(t);
-    const Vec2 a = drop(t[0], axis), b = drop(t[1], axis), c = drop(t[2], axis);
-    const Vec2 p2 = drop(p, axis), q2 = drop(q, axis);
+    const Vec2 a = drop_axis(t[0], axis), b = drop_axis(t[1], axis), c = drop_axis(t[2], axis);
+    const Vec2 p2 = drop_axis(p, axis), q2 = drop_axis(q, axis);
     return in_triangle(a, b, c, p2) || segments_meet(a, b, p2, q2) || segments_meet(b, c, p2, q2) ||
            segments_meet(c, a, p2, q2);
   }
@@ -94,8 +91,8 @@ bool same_ray(const Vec2& a, const Vec2& b, const Vec2& x) {
 /// Two coplanar triangles (a, b, c) and (a, e, f) with only corner a in common meet elsewhere: each
 /// lies in its angle at a, so they do exactly when the open angles overlap or share a ray.
 bool coplanar_fans_meet(const Vec3& a3, Vec3 b3, Vec3 c3, Vec3 e3, Vec3 f3, int axis) {
-  const Vec2 a = drop(a3, axis);
-  Vec2 b = drop(b3, axis), c = drop(c3, axis), e = drop(e3, axis), f = drop(f3, axis);
+  const Vec2 a = drop_axis(a3, axis);
+  Vec2 b = drop_axis(b3, axis), c = drop_axis(c3, axis), e = drop_axis(e3, axis), f = drop_axis(f3, axis);
   if (orient2d(a, b, c) < 0) std::swap(b, c);
   const int ef = orient2d(a, e, f);
   if (ef == 0) return false;  // u is degenerate: no area to overlap
@@ -135,8 +132,8 @@ bool triangles_intersect(const Corners& t, const Corners& u) {
     if (orient3d(t[0], t[1], t[2], u[j]) != 0) return false;
     const Vec3& p = t[(i + 1) % 3];
     const Vec3& q = t[(i + 2) % 3];
-    return one_side(orient2d(drop(p, t_axis), drop(q, t_axis), drop(t[i], t_axis)),
-                    orient2d(drop(p, t_axis), drop(q, t_axis), drop(u[j], t_axis)));
+    return one_side(orient2d(drop_axis(p, t_axis), drop_axis(q, t_axis), drop_axis(t[i], t_axis)),
+                    orient2d(drop_axis(p, t_axis), drop_axis(q, t_axis), drop_axis(u[j], t_axis)));
   }
   // Sides of u's corners against t's plane; a common corner is on it (and would cost the exact
   // fallback of orient3d, which the filter cannot settle at 0).
@@ -319,7 +316,10 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
     CellEntry entry{};
     for (int k = 0; k < 3; ++k) entry.min[k] = round_down(r.box.min[k]), entry.max[k] = round_up(r.box.max[k]);
     entry.triangle = static_cast<std::int32_t>(f);
-    for (int k = 0; k < 3; ++k) entry.keys[k] = height_field[static_cast<std::size_t>(r.corners[k])] ? r.corners[k] : ~r.corners[k];
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t v = r.corners[k];
+      entry.keys[k] = height_field[static_cast<std::size_t>(v)] ? v : ~v;
+    }
     for (int z = r.low[2]; z <= high[f][2]; ++z)
       for (int y = r.low[1]; y <= high[f][1]; ++y)
         for (int x = r.low[0]; x <= high[f][0]; ++x) {

@@ -153,7 +153,8 @@ TEST_CASE("self-intersection: the grid finds what testing every pair finds", "[s
   CHECK(clean >= 10);
 }
 
-TEST_CASE("self-intersection: local folds, found among neighbours as testing every pair finds them", "[self-intersection]") {
+TEST_CASE("self-intersection: local folds, found among neighbours as testing every pair finds them",
+          "[self-intersection]") {
   // Vertices of a sphere moved by up to twice the edge length: stars fold over (neighbours meet)
   // or stop being height fields without meeting. The pairs sharing a height-field vertex are the
   // ones the grid skips; testing every pair says whether skipping them lost an intersection.
