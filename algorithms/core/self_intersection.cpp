@@ -334,7 +334,7 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
   };
   std::vector<std::array<std::int32_t, 2>> candidates;
   std::vector<CellEntry> sorted;  // one cell's members, by home axes
-  // The pairs of triangles in boxes `a` and `b` (all pairs within `a` when they are the same) whose
+  // The pairs of triangles of buckets `a` and `b` (all pairs within `a` when they are the same) whose
   // boxes overlap and that share no height-field corner, gathered without a branch per pair (which
   // way the tests go is close to a coin toss, and mispredictions were most of the loop's time).
   const auto gather = [&candidates](const CellEntry* a_first, const CellEntry* a_last, const CellEntry* b_first,
