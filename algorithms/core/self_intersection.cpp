@@ -121,6 +121,10 @@ bool triangles_intersect(const Corners& t, const Corners& u) {
         ++shared;
         break;
       }
+  // Two corners of u at one corner of t: u has no area (a segment or a point) and is left to mesh
+  // validation, as a degenerate t is below (the corner bookkeeping that follows needs distinct ones).
+  for (int j = 0; j < 3; ++j)
+    if (t_of_u[j] >= 0 && t_of_u[j] == t_of_u[(j + 1) % 3]) return false;
   if (shared >= 3) return true;
   // A degenerate triangle has no area to meet anything with: left to mesh validation.
   if (shared == 2) {
@@ -370,11 +374,12 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
         for (std::uint32_t h = 0; h <= kAllAxes; ++h)
           for (std::uint32_t g = h; g <= kAllAxes; ++g)
             if ((h | g) == kAllAxes) gather(begin_of(h), begin_of(h + 1), begin_of(g), begin_of(g + 1), h == g);
-        for (const auto& [a, b] : candidates) {
+        for (auto [a, b] : candidates) {
+          if (a > b) std::swap(a, b);  // the order every-pair testing uses (a degenerate pair may depend on it)
           const TriangleRecord& ra = records[static_cast<std::size_t>(a)];
           const TriangleRecord& rb = records[static_cast<std::size_t>(b)];
           if (may_intersect(ra, rb, mesh) && may_intersect(rb, ra, mesh) && triangles_intersect(corners(ra), corners(rb)))
-            return std::array<std::int32_t, 2>{std::min(a, b), std::max(a, b)};
+            return std::array<std::int32_t, 2>{a, b};
         }
       }
   return std::nullopt;

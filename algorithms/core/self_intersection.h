@@ -26,6 +26,9 @@ namespace shatter {
 
 /// True when the closed triangles t and u (corners, m) have a point in common other than their
 /// common corners and the edge between two common corners. Two copies of one triangle intersect.
+/// Zero-area triangles, which mesh validation refuses, are mostly reported as meeting nothing, and
+/// for them the answer may depend on which one is t (find_self_intersection passes the lower index
+/// as t, as testing every pair in order does).
 bool triangles_intersect(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>& u);
 
 /// The first pair of triangles of `mesh` (indices, smaller first, in the grid's order) that

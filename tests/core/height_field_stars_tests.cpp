@@ -84,6 +84,32 @@ TEST_CASE("height-field stars: cones known by construction", "[self-intersection
     CHECK(height_field_stars(m)[0] == 0);
     CHECK(find_self_intersection(m));
   }
+  SECTION("a flat star whose summed normal vanishes: every triangle projects to a segment") {
+    // In z = 0, turning back on itself: the summed normal is 0, the axis x, and along x every triangle
+    // is a segment. Two of its triangles overlap.
+    Mesh m;
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(1, -1, 0), Vec3(1, 2, 0)}) m.add_vertex(p);
+    m.add_triangle(0, 1, 2, FaceTag::surface);
+    m.add_triangle(0, 2, 3, FaceTag::surface);
+    m.add_triangle(0, 3, 1, FaceTag::surface);
+    CHECK(height_field_stars(m)[0] == 0);
+    CHECK(find_self_intersection(m));
+  }
+  SECTION("an open fan that spirals one and a quarter turns: the link is no permutation") {
+    // Counter-clockwise wedges crossing +x once, as a closed star does, but the fan never closes: its
+    // first and last quarter turns overlap.
+    Mesh m;
+    m.add_vertex({0, 0, 0});
+    const int wedges = 6;
+    for (int i = 0; i <= wedges; ++i) {
+      const double angle = 2.5 * std::numbers::pi * i / wedges;
+      const double radius = 1.0 + 0.1 * i;
+      m.add_vertex({radius * std::cos(angle), radius * std::sin(angle), 0});
+    }
+    for (int i = 0; i < wedges; ++i) m.add_triangle(0, 1 + i, 2 + i, FaceTag::surface);
+    CHECK(height_field_stars(m)[0] == 0);
+    CHECK(find_self_intersection(m));
+  }
   SECTION("a link edge used twice, and a star of fewer than three triangles") {
     Mesh m = cone(5, 1, 1.0);
     m.add_triangle(0, 1, 2, FaceTag::surface);

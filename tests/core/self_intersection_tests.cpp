@@ -68,6 +68,24 @@ TEST_CASE("self-intersection: triangle pairs known by construction", "[self-inte
     CHECK_FALSE(meet({o, x, y}, {o, Vec3(-0.2, -0.2, -1), Vec3(-0.2, -0.2, 1)}));
     CHECK(meet({o, x, y}, {o, Vec3(2, 0, 0), Vec3(2, -1, 0)}));              // flat, along t's edge
   }
+  SECTION("a triangle with two corners at one corner of the other has no area: nothing to meet") {
+    // Two of u's corners sit on t's corner y; its third lies inside t, then on t's corner x.
+    CHECK_FALSE(triangles_intersect({o, x, y}, {Vec3(0.25, 0.25, 0), y, y}));
+    CHECK_FALSE(triangles_intersect({o, x, y}, {y, Vec3(0.25, 0.25, 0), y}));
+    CHECK_FALSE(triangles_intersect({o, x, y}, {x, y, y}));
+    CHECK_FALSE(triangles_intersect({o, x, y}, {o, o, o}));
+  }
+  SECTION("a touch at a coordinate that no float holds") {
+    // t's corner (0.1, 0, 0) lies on u's edge; the grid's float boxes must round outwards to see it.
+    Mesh m;
+    for (const Vec3& p : {Vec3(0.1, 0, 0), Vec3(-1, -1, 0), Vec3(-1, 1, 0), Vec3(0.1, 0, -1), Vec3(0.1, 0, 1),
+                          Vec3(1, 0.5, 0)})
+      m.add_vertex(p);
+    m.add_triangle(0, 1, 2, FaceTag::surface);
+    m.add_triangle(3, 4, 5, FaceTag::surface);
+    CHECK(meet(corners_of(m, m.triangles[0]), corners_of(m, m.triangles[1])));
+    CHECK(find_self_intersection(m));
+  }
 }
 
 TEST_CASE("self-intersection: closed solids and overlapping shells", "[self-intersection]") {
