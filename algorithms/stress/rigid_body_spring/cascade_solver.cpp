@@ -2,6 +2,7 @@
 
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
+#include "algorithms/stress/rigid_body_spring/sparse_product.h"
 
 #include <algorithm>
 #include <cmath>
@@ -157,7 +158,7 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
     for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] = x[static_cast<Eigen::Index>(i)];
   }
   for (int step = 0; step < settings_.refinement_steps; ++step) {
-    const Vector r = f - k * u;
+    const Vector r = sparse_residual(k, f, u);
     for (Block& block : blocks_) {
       const Vector rb = gather(r, block.unknowns);
       if (rb.norm() <= negligible) continue;
@@ -167,7 +168,7 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
     }
   }
   if (!u.allFinite()) return std::nullopt;
-  const Vector r = f - k * u;
+  const Vector r = sparse_residual(k, f, u);
 
   // Per component, as if solved alone: residual against its own rows, its displacements, its forces.
   SolverReport report;

@@ -3,6 +3,7 @@
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/bounded_store.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
+#include "algorithms/stress/rigid_body_spring/sparse_product.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
 #include <Eigen/IterativeLinearSolvers>
@@ -194,7 +195,7 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
     }
   }
   for (int step = 0; step < settings.refinement_steps; ++step) {
-    const Vector r = f - k * u;
+    const Vector r = sparse_residual(k, f, u);
     for (Block& block : blocks) {
       if (gather(r, block.unknowns).norm() <= negligible) continue;
       try_factorize(k, position, settings, block);
@@ -227,7 +228,7 @@ SolverReport solve_linear(const SparseMatrix& k, const Vector& f, Vector& u, con
     u.setZero();
   }
   const double f_norm = f.norm();
-  report.residual = f_norm > 0.0 ? (f - k * u).norm() / f_norm : 0.0;
+  report.residual = f_norm > 0.0 ? (f - sparse_product(k, u)).norm() / f_norm : 0.0;
   return report;
 }
 
