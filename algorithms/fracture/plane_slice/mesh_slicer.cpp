@@ -145,27 +145,6 @@ void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
   emit(other_side, xab, c, xac, tag);
 }
 
-bool MeshSlicer::cap_closes_outline(const std::vector<Triangle>& triangles) {
-  // The cap's half-edges, less one copy of every outline edge, must pair up with their twins: then
-  // each half glued to the cap is closed.
-  cap_halfedges_.clear();
-  for (const Triangle& t : triangles)
-    for (int k = 0; k < 3; ++k) ++cap_halfedges_[edge_key(t[k], t[(k + 1) % 3])];
-  for (const CapEdge& e : cap_edges_) {
-    const auto it = cap_halfedges_.find(edge_key(e[0], e[1]));
-    if (it == cap_halfedges_.end() || it->second == 0) return false;
-    --it->second;
-  }
-  for (const auto& [key, count] : cap_halfedges_) {
-    if (count == 0) continue;
-    const auto a = static_cast<std::int32_t>(key >> 32);
-    const auto b = static_cast<std::int32_t>(key & 0xffffffffu);
-    const auto twin = cap_halfedges_.find(edge_key(b, a));
-    if (twin == cap_halfedges_.end() || twin->second != count) return false;
-  }
-  return true;
-}
-
 bool MeshSlicer::add_cap() {
   const AxisProjection proj(plane_.normal);
   cap_ref_.clear();
@@ -206,7 +185,7 @@ bool MeshSlicer::add_cap() {
     error_ = "cap triangulation failed: " + cap.error;
     return false;
   }
-  if (!cap_closes_outline(cap.triangles)) {
+  if (!cap_closes_outline(cap.triangles, cap_edges_, cap_halfedges_)) {
     error_ = "the cap triangulation does not close the cut outline";
     return false;
   }

@@ -15,6 +15,7 @@
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
+#include "algorithms/fracture/plane_slice/cap_closure.h"
 #include "algorithms/fracture/plane_slice/cap_triangulator.h"
 
 #include <cstdint>
@@ -51,7 +52,6 @@ class MeshSlicer {
   void emit(Side side, std::int32_t r0, std::int32_t r1, std::int32_t r2, FaceTag tag);
   void split_triangle(const Triangle& t, FaceTag tag);
   bool add_cap();
-  bool cap_closes_outline(const std::vector<Triangle>& triangles);
   [[nodiscard]] bool on_plane(std::int32_t ref) const {
     return ref >= vertex_count_ || side_[static_cast<std::size_t>(ref)] == 0;
   }
@@ -75,7 +75,7 @@ class MeshSlicer {
   std::vector<Vec2> cap_points_;
   std::vector<CapEdge> cap_edges_;
   std::vector<std::int32_t> cap_order_;                 // cap points sorted by position
-  std::unordered_map<std::uint64_t, int> cap_halfedges_;  // cap triangles' half-edges, net count
+  HalfEdgeCounts cap_halfedges_;  // scratch of cap_closes_outline (cap_closure.h)
   std::string error_;
 };
 

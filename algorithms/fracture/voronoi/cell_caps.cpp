@@ -1,6 +1,7 @@
 // The cap half of CellClipper (cell_clipper.h): the walks along the cell's edges, the corners inside
 // the solid, and the triangulation of each cap. The clipping of the triangles is in cell_clipper.cpp.
 #include "algorithms/core/axis_projection.h"
+#include "algorithms/fracture/plane_slice/cap_closure.h"
 #include "algorithms/fracture/plane_slice/convex_cap.h"
 #include "algorithms/fracture/voronoi/cell_clipper.h"
 
@@ -133,7 +134,7 @@ bool CellClipper::triangulate_caps() {
   std::vector<Vec2> points;
   std::vector<CapEdge> edges;
   std::vector<std::int32_t> order;
-  absl::flat_hash_map<std::uint64_t, int> halfedges;
+  HalfEdgeCounts halfedges;
   std::vector<Triangle> fan;
   const std::size_t ref_count = static_cast<std::size_t>(vertex_count_) + points_.size();
   if (cap_stamp_.size() < ref_count) {
@@ -179,20 +180,7 @@ bool CellClipper::triangulate_caps() {
       if (points[static_cast<std::size_t>(order[k])] == points[static_cast<std::size_t>(order[k - 1])]) return false;
     const CapTriangulation cap = triangulate_cap(points, edges);
     if (!cap.ok) return false;
-    // The cap's half-edges, less one copy of every outline edge, must pair up with their twins.
-    halfedges.clear();
-    for (const Triangle& t : cap.triangles)
-      for (int k = 0; k < 3; ++k) ++halfedges[pair_key(t[k], t[(k + 1) % 3])];
-    for (const CapEdge& e : edges) {
-      const auto it = halfedges.find(pair_key(e[0], e[1]));
-      if (it == halfedges.end() || it->second == 0) return false;
-      --it->second;
-    }
-    for (const auto& [key, count] : halfedges) {
-      if (count == 0) continue;
-      const auto twin = halfedges.find(pair_key(static_cast<std::int32_t>(key & 0xffffffffu), static_cast<std::int32_t>(key >> 32)));
-      if (twin == halfedges.end() || twin->second != count) return false;
-    }
+    if (!cap_closes_outline(cap.triangles, edges, halfedges)) return false;
     for (const Triangle& t : cap.triangles)
       out_.add_triangle(out_index(refs[static_cast<std::size_t>(t[0])]), out_index(refs[static_cast<std::size_t>(t[1])]),
                         out_index(refs[static_cast<std::size_t>(t[2])]), FaceTag::cut);
