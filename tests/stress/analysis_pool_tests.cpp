@@ -117,7 +117,7 @@ TEST_CASE("analysis pool: bounded, oldest pattern dropped first", "[stress]") {
   const auto analysed = [](int n) {
     const Eigen::SparseMatrix<double> lower = path_lower(n);
     FactorPattern pattern(lower, {});
-    std::optional<SupernodalCholesky> f = take_analysed(pattern, lower);
+    std::optional<SparseCholesky> f = take_analysed(pattern, lower);
     REQUIRE(f.has_value());
     REQUIRE(f->factorize(lower));
     keep_analysed(std::move(pattern), std::move(*f));
@@ -135,7 +135,7 @@ TEST_CASE("analysis pool: bounded, oldest pattern dropped first", "[stress]") {
     const std::size_t reused = analysed_reuses();
     FactorPattern grouped(lower, groups);
     CHECK_FALSE(grouped == FactorPattern(lower, {}));
-    std::optional<SupernodalCholesky> f = take_analysed(grouped, lower);
+    std::optional<SparseCholesky> f = take_analysed(grouped, lower);
     REQUIRE(f.has_value());
     CHECK(analysed_reuses() == reused);
   }

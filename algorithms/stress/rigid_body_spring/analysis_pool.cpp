@@ -16,7 +16,7 @@ std::uint64_t mix(std::uint64_t h, const std::vector<int>& values) {
 
 struct Entry {
   FactorPattern pattern;
-  SupernodalCholesky factor;
+  SparseCholesky factor;
   std::size_t bytes = 0;
 };
 
@@ -34,19 +34,19 @@ FactorPattern::FactorPattern(const Eigen::SparseMatrix<double>& lower, std::span
   hash = mix(mix(mix(14695981039346656037ull, outer), inner), groups);
 }
 
-std::optional<SupernodalCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower) {
+std::optional<SparseCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower) {
   BoundedStore<Entry>& p = pool();
   if (std::optional<Entry> found =
           p.take([&](const Entry& e) { return e.pattern.hash == pattern.hash && e.pattern == pattern; })) {
     ++p.reuses;
     return std::move(found->factor);
   }
-  SupernodalCholesky factor;
+  SparseCholesky factor;
   if (!factor.analyze(lower, pattern.groups)) return std::nullopt;
   return factor;
 }
 
-void keep_analysed(FactorPattern pattern, SupernodalCholesky factor) {
+void keep_analysed(FactorPattern pattern, SparseCholesky factor) {
   const std::size_t bytes = factor.factor_bytes() + sizeof(int) * (pattern.outer.size() + pattern.inner.size() + pattern.groups.size());
   pool().keep(Entry{std::move(pattern), std::move(factor), bytes}, [](Entry&) {});
 }

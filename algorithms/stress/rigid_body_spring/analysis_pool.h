@@ -12,7 +12,7 @@
 /// (kMaxPooledFactors factors and kMaxPooledBytes of factor storage; the least recently kept goes
 /// first), and a pattern is matched by its whole arrays, never by a hash alone.
 
-#include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
+#include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
 
 #include <Eigen/SparseCore>
 
@@ -39,10 +39,10 @@ struct FactorPattern {
 
 /// A factor analysed for `pattern` (of `lower`): this thread's pooled one when there is one, else
 /// analysed now. Empty when CHOLMOD's analysis fails.
-std::optional<SupernodalCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower);
+std::optional<SparseCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower);
 
 /// Puts `factor`, analysed for `pattern`, into this thread's pool.
-void keep_analysed(FactorPattern pattern, SupernodalCholesky factor);
+void keep_analysed(FactorPattern pattern, SparseCholesky factor);
 
 /// Empties this thread's pool (benchmarks of cold solves, tests).
 void forget_analysed();

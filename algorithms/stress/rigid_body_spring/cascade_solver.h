@@ -18,7 +18,7 @@
 #include "algorithms/bonds/graph_components.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
-#include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
+#include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
 #include "algorithms/stress/stress_model.h"
 
 #include <cstdint>
@@ -59,7 +59,7 @@ class CascadeSolver final : public StressSolverState {
     std::vector<int> unknowns;             // ascending
     Eigen::SparseMatrix<double> lower;     // fixed pattern, values gathered from K
     std::vector<int> source;               // #entries of lower: index in K's value array
-    std::optional<SupernodalCholesky> cholesky;  // from the analysis pool (analysis_pool.h)
+    std::optional<SparseCholesky> cholesky;  // from the analysis pool (analysis_pool.h)
     bool failed = false;                   // a factorisation failed: the factor is not pooled again
     bool analysed = false;                 // ordering and symbolic factor done
     bool direct = false;                   // analysed and within direct_max_flops

@@ -28,7 +28,7 @@ Eigen::SparseMatrix<double> block_matrix(const Eigen::SparseMatrix<double>& k, s
                                          std::span<const int> position, double tolerance, bool lower_only);
 
 /// One group id per unknown of `unknowns` (ascending global indices, 6 per node as the stiffness
-/// assemblies number them): consecutive ids from 0, one per node, for SupernodalCholesky::analyze.
+/// assemblies number them): consecutive ids from 0, one per node, for SparseCholesky::analyze.
 std::vector<int> node_groups(std::span<const int> unknowns);
 
 }  // namespace shatter

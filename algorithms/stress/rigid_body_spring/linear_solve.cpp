@@ -4,7 +4,7 @@
 #include "algorithms/stress/rigid_body_spring/bounded_store.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/sparse_product.h"
-#include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
+#include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
@@ -59,7 +59,7 @@ SolverReport solve_block_cg(const SparseMatrix& k, const std::vector<int>& block
 /// A decoupled block and how it is solved: its factor once analysed and cheap enough, else CG.
 struct Block {
   std::vector<int> unknowns;                 // ascending global indices
-  std::optional<SupernodalCholesky> factor;  // set when factorised
+  std::optional<SparseCholesky> factor;  // set when factorised
   std::optional<FactorPattern> pattern;      // the factor's pattern (for the analysis pool)
   bool analysed = false;                     // factorisation tried (factor empty: CG block)
 };
@@ -72,7 +72,7 @@ void try_factorize(const SparseMatrix& k, const std::vector<int>& position, cons
   block.analysed = true;
   const SparseMatrix lower = block_matrix(k, block.unknowns, position, settings.decoupling_tolerance, true);
   FactorPattern pattern(lower, node_groups(block.unknowns));
-  std::optional<SupernodalCholesky> cholesky = take_analysed(pattern, lower);
+  std::optional<SparseCholesky> cholesky = take_analysed(pattern, lower);
   if (!cholesky) return;
   if (cholesky->factor_flops() > settings.direct_max_flops) {  // a CG block: keep only its analysis
     keep_analysed(std::move(pattern), std::move(*cholesky));

@@ -1,12 +1,14 @@
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
-#include <amd.h>
+#include "algorithms/stress/rigid_body_spring/node_ordering.h"
+
 #include <cholmod.h>
 #include <dlfcn.h>
 #include <omp.h>
 
 #include <cassert>
 #include <limits>
+#include <optional>
 #include <vector>
 
 namespace shatter {
@@ -90,7 +92,8 @@ SupernodalCholesky::~SupernodalCholesky() = default;
 SupernodalCholesky::SupernodalCholesky(SupernodalCholesky&&) noexcept = default;
 SupernodalCholesky& SupernodalCholesky::operator=(SupernodalCholesky&&) noexcept = default;
 
-bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups) {
+bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups,
+                                 std::span<const int> order) {
   State& s = *state_;
   if (s.factor) cholmod_free_factor(&s.factor, &s.common);
   cholmod_sparse a = view_lower(lower);
@@ -100,37 +103,16 @@ bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::
     s.factor = cholmod_analyze(&a, &s.common);
     return s.factor != nullptr && s.common.status == CHOLMOD_OK;
   }
-  // The graph between groups, one column per group: the groups of the rows below the diagonal of
-  // its columns, each once (a group's columns are consecutive; AMD orders the pattern of G + G^T).
+  std::optional<std::vector<int>> amd = order.empty() ? node_amd_order(lower, groups) : std::nullopt;
+  if (order.empty() && !amd) return false;
+  const std::span<const int> node_order = order.empty() ? std::span<const int>(*amd) : order;
+  // Each node's columns in their order, the nodes in the elimination order.
   const int n = static_cast<int>(lower.cols());
-  assert(static_cast<int>(groups.size()) == n);
-  const int group_count = n > 0 ? groups[static_cast<std::size_t>(n - 1)] + 1 : 0;
-  std::vector<int> first(static_cast<std::size_t>(group_count) + 1, n), outer(1, 0), rows;
-  std::vector<int> mark(static_cast<std::size_t>(group_count), -1);
-  const int* lower_outer = lower.outerIndexPtr();
-  const int* lower_inner = lower.innerIndexPtr();
-  for (int c = 0, g = -1; c < n; ++c) {
-    const int gc = groups[static_cast<std::size_t>(c)];
-    assert(gc >= g && gc < group_count);
-    for (; g < gc; ++g) {
-      if (g >= 0) outer.push_back(static_cast<int>(rows.size()));
-      first[static_cast<std::size_t>(g) + 1] = c;
-    }
-    for (int at = lower_outer[c]; at < lower_outer[c + 1]; ++at) {
-      const int gr = groups[static_cast<std::size_t>(lower_inner[at])];
-      if (gr != gc && mark[static_cast<std::size_t>(gr)] != gc) {
-        mark[static_cast<std::size_t>(gr)] = gc;
-        rows.push_back(gr);
-      }
-    }
-  }
-  if (group_count > 0) outer.push_back(static_cast<int>(rows.size()));
-  std::vector<int> group_order(static_cast<std::size_t>(group_count)), perm;
-  const int status = amd_order(group_count, outer.data(), rows.data(), group_order.data(), nullptr, nullptr);
-  if (status != AMD_OK && status != AMD_OK_BUT_JUMBLED) return false;
+  std::vector<int> first(node_order.size() + 1, n), perm;
+  for (int c = n - 1; c >= 0; --c) first[static_cast<std::size_t>(groups[static_cast<std::size_t>(c)])] = c;
   perm.reserve(static_cast<std::size_t>(n));
-  for (const int g : group_order)
-    for (int c = first[static_cast<std::size_t>(g)]; c < first[static_cast<std::size_t>(g) + 1]; ++c) perm.push_back(c);
+  for (const int g : node_order)
+    for (int c = first[static_cast<std::size_t>(g)]; c < n && groups[static_cast<std::size_t>(c)] == g; ++c) perm.push_back(c);
   s.common.method[0].ordering = CHOLMOD_GIVEN;
   s.factor = cholmod_analyze_p(&a, perm.data(), nullptr, 0, &s.common);
   return s.factor != nullptr && s.common.status == CHOLMOD_OK;

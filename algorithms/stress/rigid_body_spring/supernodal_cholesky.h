@@ -29,8 +29,10 @@ class SupernodalCholesky {
   /// group id per column, non-decreasing with the column, ids from 0 on: AMD then orders the graph
   /// between groups and each group's columns stay together in their order (the unknowns of one rigid
   /// body couple to the same neighbours; AMD on the node graph costs a fraction of AMD on the
-  /// unknowns, docs/stress.md section 3).
-  bool analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups = {});
+  /// unknowns, docs/stress.md section 3). `order`, when given with groups, is that node order already
+  /// computed (node_ordering.h).
+  bool analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups = {},
+               std::span<const int> order = {});
   /// Floating-point operations the numeric factorisation of the analysed pattern takes.
   [[nodiscard]] double factor_flops() const;
   /// Bytes the factor takes once factorised (values and supernode indices), 0 before analysis.

@@ -1,0 +1,270 @@
+#include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
+
+#include "algorithms/stress/rigid_body_spring/node_ordering.h"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace shatter {
+
+bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups) {
+  *this = NodeBlockCholesky{};
+  assert(lower.isCompressed() && lower.rows() == lower.cols());
+  const int n = static_cast<int>(lower.cols());
+  std::vector<int> own_groups;
+  if (groups.empty()) {
+    own_groups.resize(static_cast<std::size_t>(n));
+    for (int c = 0; c < n; ++c) own_groups[static_cast<std::size_t>(c)] = c;
+    groups = own_groups;
+  }
+  assert(static_cast<int>(groups.size()) == n);
+  const int node_count = n > 0 ? groups[static_cast<std::size_t>(n - 1)] + 1 : 0;
+  if (node_count == 0 || n % node_count != 0) return false;
+  const int g = n / node_count;
+  if (g > kMaxNodeSize) return false;
+  for (int c = 0; c < n; ++c)  // node v owns columns g v .. g v + g - 1
+    if (groups[static_cast<std::size_t>(c)] != c / g) return false;
+  std::optional<std::vector<int>> order = node_amd_order(lower, groups);
+  if (!order) return false;
+  size_ = g;
+  nodes_ = node_count;
+  order_ = std::move(*order);
+  std::vector<int> position(static_cast<std::size_t>(nodes_));
+  for (int k = 0; k < nodes_; ++k) position[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
+
+  // K's blocks by row of the elimination order. A scalar entry (r, c), r >= c, of lower lies in block
+  // (k, i) = (later, earlier) of its two nodes' positions; counted first, then placed.
+  const int* outer = lower.outerIndexPtr();
+  const int* inner = lower.innerIndexPtr();
+  std::vector<int> count(static_cast<std::size_t>(nodes_), 0), mark(static_cast<std::size_t>(nodes_), -1);
+  // Pass 1: the distinct blocks of each row (node pairs seen from the earlier node's columns).
+  std::vector<std::vector<int>> row_blocks(static_cast<std::size_t>(nodes_));
+  for (int v = 0; v < nodes_; ++v) {
+    const int pv = position[static_cast<std::size_t>(v)];
+    for (int c = g * v; c < g * v + g; ++c)
+      for (int at = outer[c]; at < outer[c + 1]; ++at) {
+        const int w = inner[at] / g;
+        if (mark[static_cast<std::size_t>(w)] == v) continue;
+        mark[static_cast<std::size_t>(w)] = v;
+        const int pw = position[static_cast<std::size_t>(w)];
+        row_blocks[static_cast<std::size_t>(std::max(pv, pw))].push_back(std::min(pv, pw));
+      }
+  }
+  row_start_.assign(static_cast<std::size_t>(nodes_) + 1, 0);
+  for (int k = 0; k < nodes_; ++k) {
+    auto& list = row_blocks[static_cast<std::size_t>(k)];
+    list.push_back(k);  // the diagonal block, even where K stores nothing of it (then singular)
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    row_start_[static_cast<std::size_t>(k) + 1] = row_start_[static_cast<std::size_t>(k)] + static_cast<int>(list.size());
+  }
+  row_column_.reserve(static_cast<std::size_t>(row_start_.back()));
+  for (const auto& list : row_blocks) row_column_.insert(row_column_.end(), list.begin(), list.end());
+  // Pass 2: each scalar entry's place in its block.
+  const int gg = g * g;
+  gather_.assign(static_cast<std::size_t>(row_start_.back()) * static_cast<std::size_t>(gg), -1);
+  for (int c = 0; c < n; ++c) {
+    const int pc = position[static_cast<std::size_t>(c / g)];
+    for (int at = outer[c]; at < outer[c + 1]; ++at) {
+      const int r = inner[at];
+      const int pr = position[static_cast<std::size_t>(r / g)];
+      // Block (k, i) with k >= i; local row in k's unknowns, local column in i's.
+      const bool row_later = pr >= pc;
+      const int k = row_later ? pr : pc, i = row_later ? pc : pr;
+      const int local_row = row_later ? r % g : c % g, local_column = row_later ? c % g : r % g;
+      const auto first = row_column_.begin() + row_start_[static_cast<std::size_t>(k)];
+      const auto last = row_column_.begin() + row_start_[static_cast<std::size_t>(k) + 1];
+      const std::size_t block = static_cast<std::size_t>(std::lower_bound(first, last, i) - row_column_.begin());
+      gather_[block * static_cast<std::size_t>(gg) + static_cast<std::size_t>(local_column * g + local_row)] = at;
+    }
+  }
+
+  // Elimination tree and column counts of L below the diagonal, in blocks (Liu's algorithm with the
+  // row-by-row walk that Eigen's SimplicialCholesky uses).
+  parent_.assign(static_cast<std::size_t>(nodes_), -1);
+  std::vector<int> flag(static_cast<std::size_t>(nodes_), -1), column_count(static_cast<std::size_t>(nodes_), 0);
+  for (int k = 0; k < nodes_; ++k) {
+    flag[static_cast<std::size_t>(k)] = k;
+    for (int at = row_start_[static_cast<std::size_t>(k)]; at < row_start_[static_cast<std::size_t>(k) + 1]; ++at)
+      for (int j = row_column_[static_cast<std::size_t>(at)]; flag[static_cast<std::size_t>(j)] != k; j = parent_[static_cast<std::size_t>(j)]) {
+        if (parent_[static_cast<std::size_t>(j)] == -1) parent_[static_cast<std::size_t>(j)] = k;
+        ++column_count[static_cast<std::size_t>(j)];
+        flag[static_cast<std::size_t>(j)] = k;
+      }
+  }
+  column_start_.assign(static_cast<std::size_t>(nodes_) + 1, 0);
+  for (int j = 0; j < nodes_; ++j) {
+    const int c = column_count[static_cast<std::size_t>(j)];
+    column_start_[static_cast<std::size_t>(j) + 1] = column_start_[static_cast<std::size_t>(j)] + c;
+    for (int t = 0; t < g; ++t) {  // scalar column t of the node: c g below, g - t in the diagonal block
+      const double entries = static_cast<double>(c) * g + (g - t);
+      flops_ += entries * entries;
+    }
+  }
+  return true;
+}
+
+std::size_t NodeBlockCholesky::factor_bytes() const {
+  const std::size_t gg = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
+  const std::size_t blocks = column_start_.empty() ? 0 : static_cast<std::size_t>(column_start_.back());
+  const std::size_t nodes = static_cast<std::size_t>(nodes_);
+  return (blocks * gg + 2 * nodes * gg) * sizeof(double) +
+         (blocks + gather_.size() + row_column_.size() + 8 * nodes) * sizeof(int);
+}
+
+namespace {
+
+/// The inverse of a lower-triangular block with a positive diagonal, by forward substitution (unrolled
+/// for the fixed size; Eigen's triangular solves of fixed-size blocks take its general blocked path).
+template <int G>
+Eigen::Matrix<double, G, G> lower_inverse(const Eigen::Matrix<double, G, G>& l) {
+  Eigen::Matrix<double, G, G> inverse = Eigen::Matrix<double, G, G>::Zero();
+  for (int c = 0; c < G; ++c)
+    for (int r = c; r < G; ++r) {
+      double s = r == c ? 1.0 : 0.0;
+      for (int k = c; k < r; ++k) s -= l(r, k) * inverse(k, c);
+      inverse(r, c) = s / l(r, r);
+    }
+  return inverse;
+}
+
+}  // namespace
+
+template <int G>
+bool NodeBlockCholesky::factorize_blocks(const double* values) {
+  using Block = Eigen::Matrix<double, G, G>;
+  using BlockMap = Eigen::Map<Block>;
+  constexpr int kEntries = G * G;
+  std::fill(flag_.begin(), flag_.end(), -1);
+  for (int j = 0; j < nodes_; ++j) fill_[static_cast<std::size_t>(j)] = column_start_[static_cast<std::size_t>(j)];
+  const auto gathered = [&](int at) {
+    Block b;
+    const int* from = gather_.data() + static_cast<std::size_t>(at) * kEntries;
+    for (int e = 0; e < kEntries; ++e) b.data()[e] = from[e] >= 0 ? values[from[e]] : 0.0;
+    return b;
+  };
+  for (int k = 0; k < nodes_; ++k) {
+    // Scatter row k of K into the workspace and collect the reach of row k in the elimination tree,
+    // in topological order (pattern_[top .. N - 1]).
+    int top = nodes_;
+    flag_[static_cast<std::size_t>(k)] = k;
+    const int last = row_start_[static_cast<std::size_t>(k) + 1] - 1;  // the diagonal block
+    for (int at = row_start_[static_cast<std::size_t>(k)]; at < last; ++at) {
+      int i = row_column_[static_cast<std::size_t>(at)];
+      BlockMap(work_.data() + static_cast<std::size_t>(i) * kEntries) = gathered(at);
+      int length = 0;
+      for (; flag_[static_cast<std::size_t>(i)] != k; i = parent_[static_cast<std::size_t>(i)]) {
+        stack_[static_cast<std::size_t>(length++)] = i;
+        flag_[static_cast<std::size_t>(i)] = k;
+      }
+      while (length > 0) pattern_[static_cast<std::size_t>(--top)] = stack_[static_cast<std::size_t>(--length)];
+    }
+    Block d = gathered(last);
+    for (; top < nodes_; ++top) {
+      const int j = pattern_[static_cast<std::size_t>(top)];
+      BlockMap x(work_.data() + static_cast<std::size_t>(j) * kEntries);
+      // L(k, j) = X L(j, j)^-T, then X(i) -= L(k, j) L(i, j)^T for the rows i < k of column j.
+      const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
+      const Block l_kj = (x * inverse_jj.transpose()).eval();
+      x.setZero();
+      const int end = fill_[static_cast<std::size_t>(j)];
+      for (int q = column_start_[static_cast<std::size_t>(j)]; q < end; ++q) {
+        const Eigen::Map<const Block> l_ij(blocks_.data() + static_cast<std::size_t>(q) * kEntries);
+        BlockMap(work_.data() + static_cast<std::size_t>(rows_[static_cast<std::size_t>(q)]) * kEntries).noalias() -=
+            l_kj * l_ij.transpose();
+      }
+      d.noalias() -= l_kj * l_kj.transpose();
+      rows_[static_cast<std::size_t>(end)] = k;
+      BlockMap(blocks_.data() + static_cast<std::size_t>(end) * kEntries) = l_kj;
+      fill_[static_cast<std::size_t>(j)] = end + 1;
+    }
+    const Eigen::LLT<Block, Eigen::Lower> llt(d);
+    if (llt.info() != Eigen::Success) return false;
+    const Block l_kk = llt.matrixL();
+    if (!l_kk.allFinite() || (l_kk.diagonal().array() <= 0.0).any()) return false;
+    const Block inverse = lower_inverse<G>(l_kk);
+    if (!inverse.allFinite()) return false;
+    BlockMap(diagonal_.data() + static_cast<std::size_t>(k) * kEntries) = inverse;
+  }
+  return true;
+}
+
+bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
+  if (nodes_ == 0) return false;
+  assert(lower.cols() == static_cast<Eigen::Index>(nodes_) * size_);
+  if (work_.empty()) {  // the factor's storage, on the first factorisation (an analysis may go unused)
+    const std::size_t gg = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
+    const std::size_t nodes = static_cast<std::size_t>(nodes_);
+    rows_.resize(static_cast<std::size_t>(column_start_.back()));
+    blocks_.resize(rows_.size() * gg);
+    diagonal_.resize(nodes * gg);
+    work_.assign(nodes * gg, 0.0);
+    flag_.resize(nodes);
+    stack_.resize(nodes);
+    pattern_.resize(nodes);
+    fill_.resize(nodes);
+  }
+  bool ok = false;
+  switch (size_) {
+    case 1: ok = factorize_blocks<1>(lower.valuePtr()); break;
+    case 2: ok = factorize_blocks<2>(lower.valuePtr()); break;
+    case 3: ok = factorize_blocks<3>(lower.valuePtr()); break;
+    case 4: ok = factorize_blocks<4>(lower.valuePtr()); break;
+    case 5: ok = factorize_blocks<5>(lower.valuePtr()); break;
+    case 6: ok = factorize_blocks<6>(lower.valuePtr()); break;
+    default: break;
+  }
+  if (!ok) std::fill(work_.begin(), work_.end(), 0.0);  // an early exit leaves the workspace dirty
+  return ok;
+}
+
+template <int G>
+void NodeBlockCholesky::solve_blocks(double* x) const {
+  using Vec = Eigen::Matrix<double, G, 1>;
+  using Block = Eigen::Matrix<double, G, G>;
+  constexpr int kEntries = G * G;
+  const auto segment = [&](int j) { return Eigen::Map<Vec>(x + static_cast<std::size_t>(j) * G); };
+  for (int j = 0; j < nodes_; ++j) {  // L y = b
+    const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
+    const Vec y = inverse_jj * segment(j);
+    segment(j) = y;
+    for (int q = column_start_[static_cast<std::size_t>(j)]; q < column_start_[static_cast<std::size_t>(j) + 1]; ++q)
+      segment(rows_[static_cast<std::size_t>(q)]).noalias() -=
+          Eigen::Map<const Block>(blocks_.data() + static_cast<std::size_t>(q) * kEntries) * y;
+  }
+  for (int j = nodes_ - 1; j >= 0; --j) {  // L^T x = y
+    Vec s = segment(j);
+    for (int q = column_start_[static_cast<std::size_t>(j)]; q < column_start_[static_cast<std::size_t>(j) + 1]; ++q)
+      s.noalias() -= Eigen::Map<const Block>(blocks_.data() + static_cast<std::size_t>(q) * kEntries).transpose() *
+                     segment(rows_[static_cast<std::size_t>(q)]);
+    const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
+    segment(j) = inverse_jj.transpose() * s;
+  }
+}
+
+Eigen::VectorXd NodeBlockCholesky::solve(const Eigen::VectorXd& b) const {
+  const int g = size_;
+  assert(b.size() == static_cast<Eigen::Index>(nodes_) * g);
+  Eigen::VectorXd x(b.size());  // in elimination order
+  for (int k = 0; k < nodes_; ++k)
+    for (int t = 0; t < g; ++t) x[k * g + t] = b[order_[static_cast<std::size_t>(k)] * g + t];
+  switch (size_) {
+    case 1: solve_blocks<1>(x.data()); break;
+    case 2: solve_blocks<2>(x.data()); break;
+    case 3: solve_blocks<3>(x.data()); break;
+    case 4: solve_blocks<4>(x.data()); break;
+    case 5: solve_blocks<5>(x.data()); break;
+    case 6: solve_blocks<6>(x.data()); break;
+    default: break;
+  }
+  Eigen::VectorXd out(b.size());
+  for (int k = 0; k < nodes_; ++k)
+    for (int t = 0; t < g; ++t) out[order_[static_cast<std::size_t>(k)] * g + t] = x[k * g + t];
+  return out;
+}
+
+}  // namespace shatter

@@ -1,0 +1,172 @@
+// The node-block sparse Cholesky (node_block_cholesky.h) against dense Cholesky solves of random
+// symmetric positive definite block-sparse matrices, its flop count on a pattern whose factor is known,
+// and its refusals: not positive definite, nodes of mixed sizes; and the choice between node blocks and
+// CHOLMOD (sparse_cholesky.h).
+
+#include "algorithms/core/random.h"
+#include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
+#include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
+
+#include <catch2/catch.hpp>
+
+#include <Eigen/Dense>
+
+#include <vector>
+
+using namespace shatter;
+
+namespace {
+
+/// A random SPD matrix of `nodes` nodes of `g` unknowns: B^T B + I over a random sparse node graph
+/// (each node coupled to up to 3 random others), stored as its lower triangle with node groups.
+struct BlockSystem {
+  Eigen::SparseMatrix<double> lower;
+  Eigen::MatrixXd dense;
+  std::vector<int> groups;
+};
+
+BlockSystem random_block_system(SplitMix64& random, int nodes, int g) {
+  const int n = nodes * g;
+  // B: one row block per bond between two nodes, with random g x g blocks at both ends.
+  std::vector<Eigen::Triplet<double>> b;
+  int row = 0;
+  for (int v = 0; v < nodes; ++v)
+    for (int e = 0; e < 3; ++e) {
+      const int w = static_cast<int>(random.uniform() * nodes * 0.9999);
+      if (w == v) continue;
+      for (int r = 0; r < g; ++r)
+        for (int c = 0; c < g; ++c) {
+          b.emplace_back(row + r, v * g + c, random.uniform(-1, 1));
+          b.emplace_back(row + r, w * g + c, random.uniform(-1, 1));
+        }
+      row += g;
+    }
+  Eigen::SparseMatrix<double> bm(row, n);
+  bm.setFromTriplets(b.begin(), b.end());
+  Eigen::SparseMatrix<double> k = Eigen::SparseMatrix<double>(bm.transpose()) * bm;
+  for (int i = 0; i < n; ++i) k.coeffRef(i, i) += 1.0;
+  BlockSystem s;
+  s.dense = Eigen::MatrixXd(k);
+  s.lower = k.triangularView<Eigen::Lower>();
+  s.lower.makeCompressed();
+  for (int i = 0; i < n; ++i) s.groups.push_back(i / g);
+  return s;
+}
+
+}  // namespace
+
+TEST_CASE("node-block Cholesky: solves random block-sparse SPD systems as a dense Cholesky does", "[stress]") {
+  SplitMix64 random(7);
+  for (int g = 1; g <= NodeBlockCholesky::kMaxNodeSize; ++g)
+    for (int trial = 0; trial < 4; ++trial) {
+      const int nodes = 5 + 20 * trial;
+      INFO("node size " << g << ", nodes " << nodes);
+      const BlockSystem s = random_block_system(random, nodes, g);
+      NodeBlockCholesky cholesky;
+      REQUIRE(cholesky.analyze(s.lower, s.groups));
+      REQUIRE(cholesky.factorize(s.lower));
+      Eigen::VectorXd b(s.dense.rows());
+      for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = random.uniform(-1, 1);
+      const Eigen::VectorXd expected = s.dense.llt().solve(b);
+      const Eigen::VectorXd x = cholesky.solve(b);
+      CHECK((x - expected).norm() <= 1e-10 * expected.norm());
+      // Factorising new values in the same pattern: scale K, the solution scales back.
+      Eigen::SparseMatrix<double> doubled = 2.0 * s.lower;
+      REQUIRE(cholesky.factorize(doubled));
+      CHECK((2.0 * cholesky.solve(b) - expected).norm() <= 1e-10 * expected.norm());
+    }
+}
+
+TEST_CASE("node-block Cholesky: one unknown per node without groups", "[stress]") {
+  SplitMix64 random(8);
+  const BlockSystem s = random_block_system(random, 60, 1);
+  NodeBlockCholesky cholesky;
+  REQUIRE(cholesky.analyze(s.lower));
+  REQUIRE(cholesky.factorize(s.lower));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(60, -1.0, 2.0);
+  const Eigen::VectorXd expected = s.dense.llt().solve(b);
+  CHECK((cholesky.solve(b) - expected).norm() <= 1e-10 * expected.norm());
+}
+
+TEST_CASE("node-block Cholesky: flops of a chain of nodes, whose factor has no fill", "[stress]") {
+  // A path of N nodes of g unknowns, dense blocks on and next to the diagonal: any elimination order
+  // AMD finds for a path has no fill, so L has one block below the diagonal in all but one column.
+  // Counted per scalar column (entries squared): sum over t of (c g + g - t)^2 with c = 1 (N - 1 times)
+  // and c = 0 (once).
+  for (int g = 1; g <= 3; ++g) {
+    const int nodes = 30, n = nodes * g;
+    Eigen::SparseMatrix<double> lower(n, n);
+    std::vector<Eigen::Triplet<double>> t;
+    for (int v = 0; v < nodes; ++v)
+      for (int c = 0; c < g; ++c) {
+        for (int r = c; r < g; ++r) t.emplace_back(v * g + r, v * g + c, r == c ? 4.0 * g : 0.5);
+        if (v + 1 < nodes)
+          for (int r = 0; r < g; ++r) t.emplace_back((v + 1) * g + r, v * g + c, -0.25);
+      }
+    lower.setFromTriplets(t.begin(), t.end());
+    lower.makeCompressed();
+    std::vector<int> groups;
+    for (int i = 0; i < n; ++i) groups.push_back(i / g);
+    NodeBlockCholesky cholesky;
+    REQUIRE(cholesky.analyze(lower, groups));
+    double expected = 0.0;
+    for (int t2 = 0; t2 < g; ++t2) {
+      const double below = g + (g - t2), last = g - t2;
+      expected += (nodes - 1) * below * below + last * last;
+    }
+    CHECK(cholesky.factor_flops() == expected);
+  }
+}
+
+TEST_CASE("node-block Cholesky: refuses what it cannot factorise", "[stress]") {
+  SplitMix64 random(9);
+  BlockSystem s = random_block_system(random, 12, 3);
+  NodeBlockCholesky cholesky;
+  REQUIRE(cholesky.analyze(s.lower, s.groups));
+
+  SECTION("not positive definite: false, and the same pattern factorises again afterwards") {
+    Eigen::SparseMatrix<double> indefinite = s.lower;
+    indefinite.coeffRef(20, 20) = -50.0;
+    CHECK_FALSE(cholesky.factorize(indefinite));
+    REQUIRE(cholesky.factorize(s.lower));
+    const Eigen::VectorXd b = Eigen::VectorXd::Ones(36);
+    const Eigen::VectorXd expected = s.dense.llt().solve(b);
+    CHECK((cholesky.solve(b) - expected).norm() <= 1e-10 * expected.norm());
+  }
+  SECTION("a value that is not finite") {
+    Eigen::SparseMatrix<double> bad = s.lower;
+    bad.coeffRef(5, 4) = std::numeric_limits<double>::infinity();
+    CHECK_FALSE(cholesky.factorize(bad));
+  }
+  SECTION("nodes of mixed sizes, or larger than six unknowns") {
+    std::vector<int> mixed = s.groups;
+    mixed[2] = 1;  // node 0 has two unknowns, node 1 four
+    CHECK_FALSE(cholesky.analyze(s.lower, mixed));
+    BlockSystem big = random_block_system(random, 4, 7);
+    CHECK_FALSE(cholesky.analyze(big.lower, big.groups));
+  }
+}
+
+TEST_CASE("sparse Cholesky: node blocks for small factorisations, CHOLMOD for large ones", "[stress]") {
+  SplitMix64 random(10);
+  const BlockSystem small = random_block_system(random, 40, 3);
+  SparseCholesky a;
+  REQUIRE(a.analyze(small.lower, small.groups));
+  CHECK(a.by_node_blocks());
+  CHECK(a.factor_flops() <= kNodeBlockMaxFlops);
+  // A dense matrix of 600 unknowns: about 600^3 / 3 = 7.2e7 flops, above the limit.
+  const int n = 600;
+  Eigen::MatrixXd m = Eigen::MatrixXd::Random(n, n) / n;
+  Eigen::MatrixXd dense = m * m.transpose() + Eigen::MatrixXd::Identity(n, n);
+  const Eigen::SparseMatrix<double> lower = dense.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
+  std::vector<int> groups(n);
+  for (int i = 0; i < n; ++i) groups[static_cast<std::size_t>(i)] = i / 6;
+  SparseCholesky b;
+  REQUIRE(b.analyze(lower, groups));
+  CHECK_FALSE(b.by_node_blocks());
+  CHECK(b.factor_flops() > kNodeBlockMaxFlops);
+  REQUIRE(b.factorize(lower));
+  const Eigen::VectorXd rhs = Eigen::VectorXd::Ones(n);
+  const Eigen::VectorXd expected = dense.llt().solve(rhs);
+  CHECK((b.solve(rhs) - expected).norm() <= 1e-10 * expected.norm());
+}
