@@ -36,51 +36,57 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
   std::vector<int> position(static_cast<std::size_t>(nodes_));
   for (int k = 0; k < nodes_; ++k) position[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
 
-  // K's blocks by row of the elimination order. A scalar entry (r, c), r >= c, of lower lies in block
-  // (k, i) = (later, earlier) of its two nodes' positions; counted first, then placed.
+  // K's blocks by row of the elimination order: block (k, i) = (later, earlier) position of a node pair
+  // with entries in lower. Lower holds each pair once (in the columns of its earlier node in the
+  // original numbering), so one pass finds each pair once; rows are then filled by counting, each
+  // row's diagonal block last (present even where K stores nothing of it: then singular).
   const int* outer = lower.outerIndexPtr();
   const int* inner = lower.innerIndexPtr();
-  std::vector<int> count(static_cast<std::size_t>(nodes_), 0), mark(static_cast<std::size_t>(nodes_), -1);
-  // Pass 1: the distinct blocks of each row (node pairs seen from the earlier node's columns).
-  std::vector<std::vector<int>> row_blocks(static_cast<std::size_t>(nodes_));
-  for (int v = 0; v < nodes_; ++v) {
-    const int pv = position[static_cast<std::size_t>(v)];
-    for (int c = g * v; c < g * v + g; ++c)
-      for (int at = outer[c]; at < outer[c + 1]; ++at) {
-        const int w = inner[at] / g;
-        if (mark[static_cast<std::size_t>(w)] == v) continue;
-        mark[static_cast<std::size_t>(w)] = v;
-        const int pw = position[static_cast<std::size_t>(w)];
-        row_blocks[static_cast<std::size_t>(std::max(pv, pw))].push_back(std::min(pv, pw));
-      }
-  }
+  std::vector<int> mark(static_cast<std::size_t>(nodes_), -1), pairs;  // pairs: (node v, node w > v)
   row_start_.assign(static_cast<std::size_t>(nodes_) + 1, 0);
-  for (int k = 0; k < nodes_; ++k) {
-    auto& list = row_blocks[static_cast<std::size_t>(k)];
-    list.push_back(k);  // the diagonal block, even where K stores nothing of it (then singular)
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    row_start_[static_cast<std::size_t>(k) + 1] = row_start_[static_cast<std::size_t>(k)] + static_cast<int>(list.size());
+  for (int v = 0; v < nodes_; ++v) {
+    mark[static_cast<std::size_t>(v)] = v;
+    for (int at = outer[g * v]; at < outer[g * v + g]; ++at) {
+      const int w = inner[at] / g;
+      if (w < v) return false;  // not a lower triangle
+      if (mark[static_cast<std::size_t>(w)] == v) continue;
+      mark[static_cast<std::size_t>(w)] = v;
+      pairs.push_back(v);
+      pairs.push_back(w);
+      const int pv = position[static_cast<std::size_t>(v)], pw = position[static_cast<std::size_t>(w)];
+      ++row_start_[static_cast<std::size_t>(std::max(pv, pw)) + 1];
+    }
   }
-  row_column_.reserve(static_cast<std::size_t>(row_start_.back()));
-  for (const auto& list : row_blocks) row_column_.insert(row_column_.end(), list.begin(), list.end());
-  // Pass 2: each scalar entry's place in its block.
+  for (int k = 0; k < nodes_; ++k)
+    row_start_[static_cast<std::size_t>(k) + 1] += row_start_[static_cast<std::size_t>(k)] + 1;  // + the diagonal
+  row_column_.assign(static_cast<std::size_t>(row_start_.back()), 0);
+  std::vector<int> next(row_start_.begin(), row_start_.end() - 1);
+  std::vector<int> pair_block(pairs.size() / 2);
+  for (std::size_t p = 0; p < pairs.size(); p += 2) {
+    const int pv = position[static_cast<std::size_t>(pairs[p])], pw = position[static_cast<std::size_t>(pairs[p + 1])];
+    const int block = next[static_cast<std::size_t>(std::max(pv, pw))]++;
+    row_column_[static_cast<std::size_t>(block)] = std::min(pv, pw);
+    pair_block[p / 2] = block;
+  }
+  for (int k = 0; k < nodes_; ++k) row_column_[static_cast<std::size_t>(row_start_[static_cast<std::size_t>(k) + 1] - 1)] = k;
+  // Each scalar entry's place in its block: the same pass again, with the block of each pair at hand.
   const int gg = g * g;
   gather_.assign(static_cast<std::size_t>(row_start_.back()) * static_cast<std::size_t>(gg), -1);
-  for (int c = 0; c < n; ++c) {
-    const int pc = position[static_cast<std::size_t>(c / g)];
-    for (int at = outer[c]; at < outer[c + 1]; ++at) {
-      const int r = inner[at];
-      const int pr = position[static_cast<std::size_t>(r / g)];
-      // Block (k, i) with k >= i; local row in k's unknowns, local column in i's.
-      const bool row_later = pr >= pc;
-      const int k = row_later ? pr : pc, i = row_later ? pc : pr;
-      const int local_row = row_later ? r % g : c % g, local_column = row_later ? c % g : r % g;
-      const auto first = row_column_.begin() + row_start_[static_cast<std::size_t>(k)];
-      const auto last = row_column_.begin() + row_start_[static_cast<std::size_t>(k) + 1];
-      const std::size_t block = static_cast<std::size_t>(std::lower_bound(first, last, i) - row_column_.begin());
-      gather_[block * static_cast<std::size_t>(gg) + static_cast<std::size_t>(local_column * g + local_row)] = at;
-    }
+  std::vector<int> block_of(static_cast<std::size_t>(nodes_), -1);
+  std::size_t p = 0;
+  for (int v = 0; v < nodes_; ++v) {
+    const int pv = position[static_cast<std::size_t>(v)];
+    block_of[static_cast<std::size_t>(v)] = row_start_[static_cast<std::size_t>(pv) + 1] - 1;
+    for (; p < pairs.size() && pairs[p] == v; p += 2) block_of[static_cast<std::size_t>(pairs[p + 1])] = pair_block[p / 2];
+    for (int c = g * v; c < g * v + g; ++c)
+      for (int at = outer[c]; at < outer[c + 1]; ++at) {
+        const int r = inner[at], w = r / g;
+        // Block (k, i) with k the later position: local row in k's unknowns, local column in i's.
+        const bool row_later = position[static_cast<std::size_t>(w)] >= pv;
+        const int local_row = row_later ? r % g : c % g, local_column = row_later ? c % g : r % g;
+        gather_[static_cast<std::size_t>(block_of[static_cast<std::size_t>(w)]) * static_cast<std::size_t>(gg) +
+                static_cast<std::size_t>(local_column * g + local_row)] = at;
+      }
   }
 
   // Elimination tree and column counts of L below the diagonal, in blocks (Liu's algorithm with the
