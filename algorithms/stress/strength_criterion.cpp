@@ -46,7 +46,11 @@ BondStress bond_stress(const Bond& bond, const BondForces& forces, const Materia
     tension_fibre = axial + flexural;
     compression_fibre = axial - flexural;
   }
-  s.tensile = std::abs(tension_fibre) >= std::abs(compression_fibre) && tension_fibre > 0.0;
+  // In pure bending both fibres carry the same stress, and the solve leaves their difference at
+  // round-off (an axial force of ~1e-12 N against 1e5 Pa of bending): which one governs is decided to
+  // a relative kFibreTie, and a tie goes to tension (a brittle material fails in tension first).
+  constexpr double kFibreTie = 1e-9;
+  s.tensile = tension_fibre > 0.0 && std::abs(tension_fibre) >= (1.0 - kFibreTie) * std::abs(compression_fibre);
   s.sigma = std::max(std::abs(tension_fibre), std::abs(compression_fibre));
   s.tau = s.shear_force / bond.area +
           (bond.polar_moment > 0.0 ? s.torsion * bond.radius / bond.polar_moment : 0.0);

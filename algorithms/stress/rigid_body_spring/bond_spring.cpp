@@ -6,21 +6,10 @@ namespace shatter {
 
 namespace {
 
-using Vector6 = Eigen::Matrix<double, 6, 1>;
-
 Eigen::Matrix3d skew(const Vec3& r) {
   Eigen::Matrix3d s;
   s << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
   return s;
-}
-
-/// Maps a node's 6 unknowns to the bond's relative motion (delta, phi): +1 for b, -1 for a.
-Matrix6 motion_map(const Vec3& lever, double sign) {
-  Matrix6 b = Matrix6::Zero();
-  b.topLeftCorner<3, 3>() = sign * Eigen::Matrix3d::Identity();
-  b.topRightCorner<3, 3>() = -sign * skew(lever);  // theta x r = -[r]x theta
-  b.bottomRightCorner<3, 3>() = sign * Eigen::Matrix3d::Identity();
-  return b;
 }
 
 }  // namespace
@@ -40,21 +29,18 @@ BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& m) {
   const Vec3 rotational(g_over_l * std::max(e.polar_moment, 2.0 * floor), e_over_l * std::max(e.moment_1, floor),
                         e_over_l * std::max(e.moment_2, floor));
   BondSpring s;
-  s.stiffness = Matrix6::Zero();
-  s.stiffness.topLeftCorner<3, 3>() = frame * translational.asDiagonal() * frame.transpose();
-  s.stiffness.bottomRightCorner<3, 3>() = frame * rotational.asDiagonal() * frame.transpose();
+  s.translation = frame * translational.asDiagonal() * frame.transpose();
+  s.rotation = frame * rotational.asDiagonal() * frame.transpose();
   s.lever_a = e.centroid - graph.nodes[static_cast<std::size_t>(e.a)].centroid;
   s.lever_b = e.centroid - graph.nodes[static_cast<std::size_t>(e.b)].centroid;
-  s.map_a = motion_map(s.lever_a, -1.0);
-  s.map_b = motion_map(s.lever_b, +1.0);
   return s;
 }
 
 std::array<Matrix6, 4> bond_blocks(const BondSpring& s) {
-  // With map = sign [I, -R; 0, I] (R = [lever]x, R^T = -R) and stiffness = diag(T, Q):
-  // map_y^T stiffness map_x = sign_x sign_y [T, -T R_x; R_y T, Q - R_y T R_x].
-  const Eigen::Matrix3d t = s.stiffness.topLeftCorner<3, 3>();
-  const Eigen::Matrix3d q = s.stiffness.bottomRightCorner<3, 3>();
+  // With map = sign [I, -R; 0, I] (R = [lever]x, R^T = -R) and the spring diag(T, Q):
+  // map_y^T diag(T, Q) map_x = sign_x sign_y [T, -T R_x; R_y T, Q - R_y T R_x].
+  const Eigen::Matrix3d& t = s.translation;
+  const Eigen::Matrix3d& q = s.rotation;
   const Eigen::Matrix3d r[2] = {skew(s.lever_a), skew(s.lever_b)};
   const Eigen::Matrix3d tr[2] = {t * r[0], t * r[1]};  // T R_x
   const Eigen::Matrix3d rt[2] = {r[0] * t, r[1] * t};  // R_y T
@@ -72,11 +58,10 @@ std::array<Matrix6, 4> bond_blocks(const BondSpring& s) {
 }
 
 BondForces bond_forces(const Bond& e, const BondSpring& s, const double* u_a, const double* u_b) {
-  Vector6 motion = Vector6::Zero();
-  motion += s.map_a * Eigen::Map<const Vector6>(u_a);
-  motion += s.map_b * Eigen::Map<const Vector6>(u_b);
-  const Vector6 spring = s.stiffness * motion;  // force and moment b receives is minus this
-  const Vec3 force = spring.head<3>(), moment = spring.tail<3>();
+  const Eigen::Map<const Vec3> move_a(u_a), turn_a(u_a + 3), move_b(u_b), turn_b(u_b + 3);
+  const Vec3 delta = (move_b + turn_b.cross(s.lever_b)) - (move_a + turn_a.cross(s.lever_a));
+  const Vec3 force = s.translation * delta;  // force and moment b receives is minus these
+  const Vec3 moment = s.rotation * (turn_b - turn_a);
   BondForces out;
   out.normal = force.dot(e.normal);
   out.shear_1 = force.dot(e.axis_1);

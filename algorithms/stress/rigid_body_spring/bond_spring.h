@@ -26,23 +26,24 @@ struct BondForces {
 /// 6 x 6 matrix of the rigid-body-spring model (translation first, then rotation).
 using Matrix6 = Eigen::Matrix<double, 6, 6>;
 
-/// A bond's spring: relative motion (delta, phi) = map_a u_a + map_b u_b, spring force and moment
-/// b receives = -stiffness (delta, phi).
+/// A bond's spring: relative motion delta = (u_b + theta_b x lever_b) - (u_a + theta_a x lever_a) (the
+/// motions of the bond centroid with each node), phi = theta_b - theta_a; the spring force and moment b
+/// receives are -translation delta and -rotation phi.
 struct BondSpring {
-  Matrix6 stiffness;   ///< N/m and N m/rad, block-diagonal (translation, rotation), global axes
-  Matrix6 map_a;       ///< node a's 6 unknowns -> relative motion (sign -1)
-  Matrix6 map_b;       ///< node b's 6 unknowns -> relative motion (sign +1)
-  Vec3 lever_a;        ///< bond centroid - centroid of a, m (map_a = -[I, -[lever_a]x; 0, I])
-  Vec3 lever_b;        ///< bond centroid - centroid of b, m (map_b = +[I, -[lever_b]x; 0, I])
+  Eigen::Matrix3d translation;  ///< N/m, global axes: axial E A / l along the normal, shear G A / l across
+  Eigen::Matrix3d rotation;     ///< N m/rad, global axes: torsion G J / l, bending E I / l
+  Vec3 lever_a;                 ///< bond centroid - centroid of a, m
+  Vec3 lever_b;                 ///< bond centroid - centroid of b, m
 };
 
 /// The spring of `graph.bonds[bond]` for `material`.
 BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& material);
 
-/// The bond's four 6 x 6 stiffness blocks map_y^T stiffness map_x, indexed 2 x + y with x, y in
-/// {0: a, 1: b} (block 2 x + y couples node y's equations to node x's unknowns). Computed from the
-/// structure of the maps (identity and lever blocks) rather than as general 6 x 6 products, so that
-/// both assemblies (spring_system.cpp, graph_stiffness.cpp) use the very same numbers.
+/// The bond's four 6 x 6 stiffness blocks map_y^T diag(translation, rotation) map_x, indexed 2 x + y
+/// with x, y in {0: a, 1: b} (block 2 x + y couples node y's equations to node x's unknowns), where
+/// map_a = -[I, -[lever_a]x; 0, I] and map_b = +[I, -[lever_b]x; 0, I] take a node's unknowns to the
+/// relative motion. Computed from 3 x 3 blocks, never as 6 x 6 products, so that both assemblies
+/// (spring_system.cpp, graph_stiffness.cpp) use the very same numbers.
 std::array<Matrix6, 4> bond_blocks(const BondSpring& spring);
 
 /// The bond's internal forces from its end nodes' unknowns `u_a`, `u_b` (6 each: m, rad).
