@@ -88,7 +88,8 @@ bool CascadeSolver::fits(const SupportGraph& graph, const Material& material, co
          young_modulus_ == material.young_modulus && shear_modulus_ == material.shear_modulus() &&
          settings_.decoupling_tolerance == settings.decoupling_tolerance &&
          settings_.direct_max_flops == settings.direct_max_flops &&
-         settings_.refinement_steps == settings.refinement_steps && !settings.reference;
+         settings_.refinement_steps == settings.refinement_steps &&
+         settings_.refinement_gain == settings.refinement_gain && !settings.reference;
 }
 
 bool CascadeSolver::couplings_negligible() const {
@@ -157,8 +158,16 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
     const Vector x = block.cholesky->solve(fb);
     for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] = x[static_cast<Eigen::Index>(i)];
   }
+  double last = std::numeric_limits<double>::infinity();
+  std::optional<Vector> final_residual;  // set by a refinement that ended with it
   for (int step = 0; step < settings_.refinement_steps; ++step) {
-    const Vector r = sparse_residual(k, f, u);
+    Vector r = sparse_residual(k, f, u);
+    const double now = r.norm();
+    if (!refinement_pays(last, now, settings_)) {
+      final_residual = std::move(r);
+      break;
+    }
+    last = now;
     for (Block& block : blocks_) {
       const Vector rb = gather(r, block.unknowns);
       if (rb.norm() <= negligible) continue;
@@ -168,7 +177,7 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
     }
   }
   if (!u.allFinite()) return std::nullopt;
-  const Vector r = sparse_residual(k, f, u);
+  const Vector r = final_residual ? std::move(*final_residual) : sparse_residual(k, f, u);
 
   // Per component, as if solved alone: residual against its own rows, its displacements, its forces.
   SolverReport report;

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -94,8 +95,7 @@ void add_direct_solution(const Block& block, const Vector& r, Vector& u) {
 /// under other loads) needs neither the split nor a factorisation: the factors are those the same K
 /// would give again, so the solution is bit for bit that of a fresh solve.
 struct SolvedSystem {
-  std::vector<int> outer, inner;
-  std::vector<double> values;
+  std::unique_ptr<SparseMatrix> k;  // compressed; on the heap, as Eigen's SparseMatrix has no move constructor
   double decoupling_tolerance = 0.0, direct_max_flops = 0.0;
   std::vector<Block> blocks;
   std::size_t bytes = 0;
@@ -109,10 +109,11 @@ BoundedStore<SolvedSystem>& solved_systems() {
 }
 
 bool same_pattern(const SolvedSystem& e, const SparseMatrix& k, const SpringSolverSettings& settings) {
-  return e.outer.size() == static_cast<std::size_t>(k.cols()) + 1 && e.inner.size() == static_cast<std::size_t>(k.nonZeros()) &&
+  const SparseMatrix& kept = *e.k;
+  return kept.cols() == k.cols() && kept.nonZeros() == k.nonZeros() &&
          e.decoupling_tolerance == settings.decoupling_tolerance && e.direct_max_flops == settings.direct_max_flops &&
-         std::equal(e.outer.begin(), e.outer.end(), k.outerIndexPtr()) &&
-         std::equal(e.inner.begin(), e.inner.end(), k.innerIndexPtr());
+         std::equal(kept.outerIndexPtr(), kept.outerIndexPtr() + kept.cols() + 1, k.outerIndexPtr()) &&
+         std::equal(kept.innerIndexPtr(), kept.innerIndexPtr() + kept.nonZeros(), k.innerIndexPtr());
 }
 
 /// Hands a block's factor to the analysis pool (its analysis stays useful for the same pattern).
@@ -128,7 +129,7 @@ std::optional<std::vector<Block>> take_solved_blocks(const SparseMatrix& k, cons
   BoundedStore<SolvedSystem>& store = solved_systems();
   std::optional<SolvedSystem> found = store.take([&](const SolvedSystem& e) { return same_pattern(e, k, settings); });
   if (!found) return std::nullopt;
-  if (std::equal(found->values.begin(), found->values.end(), k.valuePtr())) {
+  if (std::equal(found->k->valuePtr(), found->k->valuePtr() + found->k->nonZeros(), k.valuePtr())) {
     ++store.reuses;
     return std::move(found->blocks);
   }
@@ -136,9 +137,10 @@ std::optional<std::vector<Block>> take_solved_blocks(const SparseMatrix& k, cons
   return std::nullopt;
 }
 
-/// Stores `blocks`, solved with `k`; the oldest systems leave (their factors to the analysis pool)
-/// while the store holds kMaxSolvedSystems or would pass kMaxPooledBytes.
-void keep_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& settings, std::vector<Block> blocks) {
+/// Stores `blocks`, solved with `k` (swapped in, not copied: `k` is left empty); the oldest systems leave
+/// (their factors to the analysis pool) while the store holds kMaxSolvedSystems or would pass
+/// kMaxPooledBytes.
+void keep_solved_blocks(SparseMatrix& k, const SpringSolverSettings& settings, std::vector<Block> blocks) {
   std::size_t bytes = static_cast<std::size_t>(k.nonZeros()) * (sizeof(double) + sizeof(int));
   for (const Block& block : blocks) bytes += block.factor ? block.factor->factor_bytes() : 0;
   if (bytes > kMaxPooledBytes) {
@@ -146,9 +148,8 @@ void keep_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& setti
     return;
   }
   SolvedSystem e;
-  e.outer.assign(k.outerIndexPtr(), k.outerIndexPtr() + k.cols() + 1);
-  e.inner.assign(k.innerIndexPtr(), k.innerIndexPtr() + k.nonZeros());
-  e.values.assign(k.valuePtr(), k.valuePtr() + k.nonZeros());
+  e.k = std::make_unique<SparseMatrix>();
+  e.k->swap(k);
   e.decoupling_tolerance = settings.decoupling_tolerance;
   e.direct_max_flops = settings.direct_max_flops;
   e.blocks = std::move(blocks);
@@ -165,9 +166,9 @@ void keep_solved_blocks(const SparseMatrix& k, const SpringSolverSettings& setti
 /// the out-of-plane half, never factorised, while an axis-aligned cantilever leaves 1e-14 |f| on its
 /// axial unknowns, whose correction keeps the axial force at ~1e-26 N rather than 1e-11 N. A K solved
 /// before on this thread brings its blocks and factors along (SolvedSystem).
-SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
+SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings,
+                          std::optional<double>& residual_norm, std::vector<Block>& blocks) {
   SolverReport report;
-  std::vector<Block> blocks;
   if (std::optional<std::vector<Block>> solved = take_solved_blocks(k, settings)) {
     blocks = std::move(*solved);
   } else {
@@ -194,19 +195,29 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
       report.converged = report.converged && r.converged;
     }
   }
+  double last = std::numeric_limits<double>::infinity();
   for (int step = 0; step < settings.refinement_steps; ++step) {
     const Vector r = sparse_residual(k, f, u);
+    const double now = r.norm();
+    if (!refinement_pays(last, now, settings)) {
+      residual_norm = now;  // the residual of the final u
+      break;
+    }
+    last = now;
     for (Block& block : blocks) {
       if (gather(r, block.unknowns).norm() <= negligible) continue;
       try_factorize(k, position, settings, block);
       if (block.factor) add_direct_solution(block, r, u);
     }
   }
-  keep_solved_blocks(k, settings, std::move(blocks));
   return report;
 }
 
 }  // namespace
+
+bool refinement_pays(double last, double now, const SpringSolverSettings& settings) {
+  return now > 0.0 && now * settings.refinement_gain <= last;
+}
 
 void forget_solver_reuse() {
   solved_systems().clear();
@@ -215,20 +226,24 @@ void forget_solver_reuse() {
 
 std::size_t solved_system_reuses() { return solved_systems().reuses; }
 
-SolverReport solve_linear(const SparseMatrix& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
+SolverReport solve_linear(SparseMatrix&& k, const Vector& f, Vector& u, const SpringSolverSettings& settings) {
   if (!u.allFinite()) u.setZero();
   SolverReport report;
+  std::optional<double> residual_norm;  // set by a refinement that ended with it
+  std::vector<Block> blocks;            // of the block path, kept with K for reuse
   if (settings.reference) {
     report = solve_reference(k, f, u, settings);
   } else {
-    report = solve_blocks(k, f, u, settings);
+    report = solve_blocks(k, f, u, settings, residual_norm, blocks);
   }
   if (!u.allFinite()) {
     report.converged = false;
     u.setZero();
   }
   const double f_norm = f.norm();
-  report.residual = f_norm > 0.0 ? (f - sparse_product(k, u)).norm() / f_norm : 0.0;
+  if (!residual_norm || !report.converged) residual_norm = (f - sparse_product(k, u)).norm();
+  report.residual = f_norm > 0.0 ? *residual_norm / f_norm : 0.0;
+  if (!settings.reference) keep_solved_blocks(k, settings, std::move(blocks));
   return report;
 }
 

@@ -16,18 +16,27 @@ namespace shatter {
 /// blocks (3D bodies fill far more) go to CG. See docs/stress.md, section 3.
 struct SpringSolverSettings {
   double direct_max_flops = 1e9;      ///< supernodal Cholesky up to this many factorisation flops per block, CG above
-  int refinement_steps = 2;           ///< iterative-refinement steps against the full K after a direct solve
+  int refinement_steps = 2;           ///< at most this many iterative-refinement steps against the full K after a direct solve
+  double refinement_gain = 4.0;       ///< refinement stops once a step cut the residual norm by less than this factor
   double cg_tolerance = 1e-10;        ///< relative residual |K_b u_b - f_b| / |f_b| at which CG stops, per block
   int cg_max_iterations = 20000;      ///< CG gives up (converged = false) after this many iterations
   double decoupling_tolerance = 1e-13;///< |K_ij| <= this sqrt(K_ii K_jj) is dropped to find decoupled blocks; 0 keeps all
   bool reference = false;             ///< Eigen SimplicialLDLT on the whole K, no splitting (tests, baselines)
 };
 
-/// Solves `k` u = `f` (k: both triangles, SPD). `u` holds the warm start (used by CG; non-finite
-/// entries are replaced by zero) and receives the solution. The report carries the residual
-/// |f - k u| / |f| against the full `k`, iterations, and convergence.
-SolverReport solve_linear(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f, Eigen::VectorXd& u,
+/// Solves `k` u = `f` (k: both triangles, SPD, compressed). `u` holds the warm start (used by CG;
+/// non-finite entries are replaced by zero) and receives the solution. The report carries the residual
+/// |f - k u| / |f| against the full `k`, iterations, and convergence. `k` is taken over (left empty): it
+/// is kept with its split and factors for the next solve of the same K, without a copy.
+SolverReport solve_linear(Eigen::SparseMatrix<double>&& k, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                           const SpringSolverSettings& settings);
+
+/// Whether another refinement step is worth its solve: the residual norm went from `last` (before the
+/// previous step; infinite before the first) to `now`. Refinement in working precision cuts the residual
+/// by a roughly constant factor until it reaches its round-off floor, where a step changes it by less
+/// than 2 (the benchmark walls: the first step gains 1.4x to 3x, the second nothing, docs/stress.md
+/// section 3), so a step that gained less than `refinement_gain` ends the refinement.
+bool refinement_pays(double last, double now, const SpringSolverSettings& settings);
 
 /// Empties this thread's solved systems (a K solved again reuses its split and factors) and its
 /// analysis pool (analysis_pool.h): the next solves start cold (benchmarks of first solves, tests).

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 namespace shatter {
 
@@ -110,7 +111,7 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
       u[6 * i + k] = displacements[g];
     }
   if (n > 0 && f.squaredNorm() > 0.0) {
-    report = solve_linear(stiffness, f, u, settings);
+    report = solve_linear(std::move(stiffness), f, u, settings);
     report.solves = 1;
     report.unknowns = n;
   } else {
