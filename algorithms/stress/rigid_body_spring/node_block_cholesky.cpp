@@ -42,7 +42,8 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
   // row's diagonal block last (present even where K stores nothing of it: then singular).
   const int* outer = lower.outerIndexPtr();
   const int* inner = lower.innerIndexPtr();
-  std::vector<int> mark(static_cast<std::size_t>(nodes_), -1), pairs;  // pairs: (node v, node w > v)
+  std::vector<int> mark(static_cast<std::size_t>(nodes_), -1);
+  std::vector<int>& pairs = pairs_;  // (node v, node w > v), by v
   row_start_.assign(static_cast<std::size_t>(nodes_) + 1, 0);
   for (int v = 0; v < nodes_; ++v) {
     mark[static_cast<std::size_t>(v)] = v;
@@ -61,7 +62,8 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
     row_start_[static_cast<std::size_t>(k) + 1] += row_start_[static_cast<std::size_t>(k)] + 1;  // + the diagonal
   row_column_.assign(static_cast<std::size_t>(row_start_.back()), 0);
   std::vector<int> next(row_start_.begin(), row_start_.end() - 1);
-  std::vector<int> pair_block(pairs.size() / 2);
+  std::vector<int>& pair_block = pair_block_;
+  pair_block.resize(pairs.size() / 2);
   for (std::size_t p = 0; p < pairs.size(); p += 2) {
     const int pv = position[static_cast<std::size_t>(pairs[p])], pw = position[static_cast<std::size_t>(pairs[p + 1])];
     const int block = next[static_cast<std::size_t>(std::max(pv, pw))]++;
@@ -69,26 +71,6 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
     pair_block[p / 2] = block;
   }
   for (int k = 0; k < nodes_; ++k) row_column_[static_cast<std::size_t>(row_start_[static_cast<std::size_t>(k) + 1] - 1)] = k;
-  // Each scalar entry's place in its block: the same pass again, with the block of each pair at hand.
-  const int gg = g * g;
-  gather_.assign(static_cast<std::size_t>(row_start_.back()) * static_cast<std::size_t>(gg), -1);
-  std::vector<int> block_of(static_cast<std::size_t>(nodes_), -1);
-  std::size_t p = 0;
-  for (int v = 0; v < nodes_; ++v) {
-    const int pv = position[static_cast<std::size_t>(v)];
-    block_of[static_cast<std::size_t>(v)] = row_start_[static_cast<std::size_t>(pv) + 1] - 1;
-    for (; p < pairs.size() && pairs[p] == v; p += 2) block_of[static_cast<std::size_t>(pairs[p + 1])] = pair_block[p / 2];
-    for (int c = g * v; c < g * v + g; ++c)
-      for (int at = outer[c]; at < outer[c + 1]; ++at) {
-        const int r = inner[at], w = r / g;
-        // Block (k, i) with k the later position: local row in k's unknowns, local column in i's.
-        const bool row_later = position[static_cast<std::size_t>(w)] >= pv;
-        const int local_row = row_later ? r % g : c % g, local_column = row_later ? c % g : r % g;
-        gather_[static_cast<std::size_t>(block_of[static_cast<std::size_t>(w)]) * static_cast<std::size_t>(gg) +
-                static_cast<std::size_t>(local_column * g + local_row)] = at;
-      }
-  }
-
   // Elimination tree and column counts of L below the diagonal, in blocks (Liu's algorithm with the
   // row-by-row walk that Eigen's SimplicialCholesky uses).
   parent_.assign(static_cast<std::size_t>(nodes_), -1);
@@ -114,12 +96,45 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
   return true;
 }
 
+void NodeBlockCholesky::build_gather(const Eigen::SparseMatrix<double>& lower) {
+  // Each scalar entry's place in its block: the pass over lower again, with the block of each pair at
+  // hand. Done by the first factorisation, so that an analysis only asked for its flop count (a system
+  // that goes to CHOLMOD) does not pay for it.
+  const int g = size_;
+  const int* outer = lower.outerIndexPtr();
+  const int* inner = lower.innerIndexPtr();
+  std::vector<int> position(static_cast<std::size_t>(nodes_));
+  for (int k = 0; k < nodes_; ++k) position[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
+  const std::vector<int>& pairs = pairs_;
+  const std::vector<int>& pair_block = pair_block_;
+  const int gg = g * g;
+  gather_.assign(static_cast<std::size_t>(row_start_.back()) * static_cast<std::size_t>(gg), -1);
+  std::vector<int> block_of(static_cast<std::size_t>(nodes_), -1);
+  std::size_t p = 0;
+  for (int v = 0; v < nodes_; ++v) {
+    const int pv = position[static_cast<std::size_t>(v)];
+    block_of[static_cast<std::size_t>(v)] = row_start_[static_cast<std::size_t>(pv) + 1] - 1;
+    for (; p < pairs.size() && pairs[p] == v; p += 2) block_of[static_cast<std::size_t>(pairs[p + 1])] = pair_block[p / 2];
+    for (int c = g * v; c < g * v + g; ++c)
+      for (int at = outer[c]; at < outer[c + 1]; ++at) {
+        const int r = inner[at], w = r / g;
+        // Block (k, i) with k the later position: local row in k's unknowns, local column in i's.
+        const bool row_later = position[static_cast<std::size_t>(w)] >= pv;
+        const int local_row = row_later ? r % g : c % g, local_column = row_later ? c % g : r % g;
+        gather_[static_cast<std::size_t>(block_of[static_cast<std::size_t>(w)]) * static_cast<std::size_t>(gg) +
+                static_cast<std::size_t>(local_column * g + local_row)] = at;
+      }
+  }
+  pairs_ = {};  // not needed again
+  pair_block_ = {};
+}
+
 std::size_t NodeBlockCholesky::factor_bytes() const {
   const std::size_t gg = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
   const std::size_t blocks = column_start_.empty() ? 0 : static_cast<std::size_t>(column_start_.back());
   const std::size_t nodes = static_cast<std::size_t>(nodes_);
   return (blocks * gg + 2 * nodes * gg) * sizeof(double) +
-         (blocks + gather_.size() + row_column_.size() + 8 * nodes) * sizeof(int);
+         (blocks + (row_start_.empty() ? 0 : static_cast<std::size_t>(row_start_.back())) * gg + row_column_.size() + 8 * nodes) * sizeof(int);
 }
 
 namespace {
@@ -203,6 +218,7 @@ bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   if (nodes_ == 0) return false;
   assert(lower.cols() == static_cast<Eigen::Index>(nodes_) * size_);
   if (work_.empty()) {  // the factor's storage, on the first factorisation (an analysis may go unused)
+    build_gather(lower);
     const std::size_t gg = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
     const std::size_t nodes = static_cast<std::size_t>(nodes_);
     rows_.resize(static_cast<std::size_t>(column_start_.back()));

@@ -45,6 +45,7 @@ class NodeBlockCholesky {
   [[nodiscard]] std::span<const int> node_order() const { return order_; }
 
  private:
+  void build_gather(const Eigen::SparseMatrix<double>& lower);
   template <int G>
   bool factorize_blocks(const double* values);
   template <int G>
@@ -58,8 +59,9 @@ class NodeBlockCholesky {
   std::vector<int> column_start_;// N + 1: first block of each column of L below the diagonal
   // K's blocks by row of the elimination order: row k holds K(k, i) for i <= k (the diagonal last);
   // each block's g x g entries (column-major) as indices into lower's values, -1 where K stores none.
-  // The diagonal block gathers its lower triangle only (all its Cholesky reads).
-  std::vector<int> row_start_, row_column_, gather_;
+  // The diagonal block gathers its lower triangle only (all its Cholesky reads). gather_ is built by the
+  // first factorisation, from the node pairs of lower (v, w > v, by v) and their blocks.
+  std::vector<int> row_start_, row_column_, gather_, pairs_, pair_block_;
   // The factor: rows and g x g blocks (column-major) of L below the diagonal, column by column, and
   // the inverses of the diagonal blocks (lower triangular; every use of L(j, j) is a solve with it).
   std::vector<int> rows_;
