@@ -154,8 +154,8 @@ TEST_CASE("sparse Cholesky: node blocks for small factorisations, CHOLMOD for la
   REQUIRE(a.analyze(small.lower, small.groups));
   CHECK(a.by_node_blocks());
   CHECK(a.factor_flops() <= kNodeBlockMaxFlops);
-  // A dense matrix of 600 unknowns: about 600^3 / 3 = 7.2e7 flops, above the limit.
-  const int n = 600;
+  // A dense matrix of 840 unknowns: about 840^3 / 3 = 2.0e8 flops, above the limit.
+  const int n = 840;
   Eigen::MatrixXd m = Eigen::MatrixXd::Random(n, n) / n;
   Eigen::MatrixXd dense = m * m.transpose() + Eigen::MatrixXd::Identity(n, n);
   const Eigen::SparseMatrix<double> lower = dense.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();

@@ -20,7 +20,7 @@
 namespace shatter {
 
 /// Factorisations up to this many flops (as CHOLMOD counts them) go by node blocks.
-inline constexpr double kNodeBlockMaxFlops = 5e7;
+inline constexpr double kNodeBlockMaxFlops = 1e8;
 
 class SparseCholesky {
  public:
