@@ -2,6 +2,7 @@
 // large enough (2,898 unknowns) to split into blocks: displacements to 1e-9 relative, and the same
 // cascade (bonds broken per round, falling clusters) exactly.
 #include "algorithms/stress/propagation.h"
+#include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "tests/stress/structures.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace shatter;
 using namespace shatter::test;
@@ -151,4 +153,29 @@ TEST_CASE("rigid-body-spring: the per-component path (CG blocks) gives the same 
     CHECK(pi->result.falling_clusters == pr->result.falling_clusters);
     CHECK(relative_difference(pd->result.displacements, pr->result.displacements) < 1e-9);
   }
+}
+
+TEST_CASE("rigid-body-spring: refinement stops at its round-off floor without losing accuracy", "[stress][von-mises]") {
+  SpringSolverSettings s;
+  CHECK(refinement_pays(std::numeric_limits<double>::infinity(), 1e-13, s));  // the first step always runs
+  CHECK(refinement_pays(1e-10, 1e-12, s));   // a gain of 100: another step may gain again
+  CHECK_FALSE(refinement_pays(1e-13, 6e-14, s));  // a gain of 1.7: at the floor
+  CHECK_FALSE(refinement_pays(1e-13, 0.0, s));    // exact
+  // On the 23 x 22 wall, the early stop against every allowed step (a gain of 1 continues while the
+  // residual falls at all, up to 4 steps): the same displacements to 1e-12, residuals both at round-off.
+  const SupportGraph g = block_wall(23, 22);
+  SpringSolverSettings every;
+  every.refinement_gain = 1.0;
+  every.refinement_steps = 4;
+  const StrengthCriterionModel early(Criterion::von_mises);
+  const StrengthCriterionModel all_steps(Criterion::von_mises, every);
+  Loads pushed;
+  pushed.point_loads.push_back(PointLoad{300, g.nodes[300].centroid, Vec3(2e4, 0.0, -2e4)});
+  Result<StressResult> a = early.evaluate(g, pushed, Material{});
+  Result<StressResult> b = all_steps.evaluate(g, pushed, Material{});
+  REQUIRE(a.ok());
+  REQUIRE(b.ok());
+  CHECK(relative_difference(a->displacements, b->displacements) < 1e-12);
+  CHECK(a->report.residual < 1e-12);
+  CHECK(a->report.residual < 4.0 * b->report.residual);
 }

@@ -1,5 +1,5 @@
 #pragma once
-/// Analysed CHOLMOD factors kept for reuse, keyed by the exact pattern they were analysed for.
+/// Analysed sparse Cholesky factors (sparse_cholesky.h) kept for reuse, keyed by the exact pattern they were analysed for.
 ///
 /// Design note: the ordering (AMD) and the symbolic factorisation depend only on the pattern of the
 /// lower triangle and on the node groups, so a factor analysed for a pattern serves every later
@@ -38,7 +38,7 @@ struct FactorPattern {
 };
 
 /// A factor analysed for `pattern` (of `lower`): this thread's pooled one when there is one, else
-/// analysed now. Empty when CHOLMOD's analysis fails.
+/// analysed now. Empty when the analysis fails.
 std::optional<SparseCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower);
 
 /// Puts `factor`, analysed for `pattern`, into this thread's pool.

@@ -5,7 +5,7 @@
 /// Design note: breaking bonds only removes values from K, so one pattern (the intact graph's, with
 /// identity rows for the nodes of falling clusters, graph_stiffness.h) serves every round. The split
 /// into decoupled blocks (decoupled_blocks.h), each block's lower-triangle pattern with its gather map
-/// from K, and each block's AMD ordering and CHOLMOD symbolic analysis are therefore done once; a round
+/// from K, and each block's AMD ordering and symbolic analysis (sparse_cholesky.h) are therefore done once; a round
 /// costs an assembly by scatter, a gather per block and a numeric factorisation. The analyses go back
 /// to the thread's analysis pool when the solver ends, so the next cascade on the same graph starts
 /// with them (the pattern is the intact graph's whatever broke). The anchored

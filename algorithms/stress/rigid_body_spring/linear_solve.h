@@ -1,6 +1,7 @@
 #pragma once
 /// The linear solve K u = f of one anchored component: split into decoupled blocks, each block solved
-/// by supernodal Cholesky when its factorisation is cheap enough, else by Jacobi-preconditioned CG.
+/// by sparse Cholesky (sparse_cholesky.h: node blocks, or CHOLMOD's supernodes for large factors) when
+/// its factorisation is cheap enough, else by Jacobi-preconditioned CG.
 /// The split and the factors of the last few K solved on a thread are kept: the same K under other
 /// loads (a structure evaluated again) only pays the triangular solves.
 
@@ -11,11 +12,11 @@
 namespace shatter {
 
 /// Solver options. The direct solve is exact to round-off (the beam tests need 1e-9); it is chosen per
-/// decoupled block when CHOLMOD's analysis predicts at most `direct_max_flops` for the factorisation:
-/// on the 71 x 71 wall's in-plane half (14,910 unknowns) that is 1.4e8 flops, ~60 ms here. Larger
+/// decoupled block when its analysis predicts at most `direct_max_flops` for the factorisation:
+/// on the 71 x 71 wall's in-plane half (14,910 unknowns) that is 9.4e7 flops, ~9 ms here. Larger
 /// blocks (3D bodies fill far more) go to CG. See docs/stress.md, section 3.
 struct SpringSolverSettings {
-  double direct_max_flops = 1e9;      ///< supernodal Cholesky up to this many factorisation flops per block, CG above
+  double direct_max_flops = 1e9;      ///< sparse Cholesky up to this many factorisation flops per block, CG above
   int refinement_steps = 2;           ///< at most this many iterative-refinement steps against the full K after a direct solve
   double refinement_gain = 4.0;       ///< refinement stops once a step cut the residual norm by less than this factor
   double cg_tolerance = 1e-10;        ///< relative residual |K_b u_b - f_b| / |f_b| at which CG stops, per block
