@@ -138,12 +138,57 @@ TEST_CASE("node-block Cholesky: refuses what it cannot factorise", "[stress]") {
     bad.coeffRef(5, 4) = std::numeric_limits<double>::infinity();
     CHECK_FALSE(cholesky.factorize(bad));
   }
+  SECTION("a node whose diagonal block K does not store: singular") {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int k = 0; k < s.lower.outerSize(); ++k)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(s.lower, k); it; ++it)
+        if (it.col() / 3 != 4 || it.row() / 3 != 4) t.emplace_back(it.row(), it.col(), it.value());
+    Eigen::SparseMatrix<double> hollow(36, 36);
+    hollow.setFromTriplets(t.begin(), t.end());
+    NodeBlockCholesky h;
+    REQUIRE(h.analyze(hollow, s.groups));
+    CHECK_FALSE(h.factorize(hollow));
+    CHECK_FALSE(h.solve(Eigen::VectorXd::Ones(36)).allFinite());  // no factor: NaN, never a stale one
+  }
+  SECTION("an entry above the diagonal between two nodes: refused, the object left empty") {
+    Eigen::SparseMatrix<double> upper = s.lower;
+    upper.coeffRef(0, 35) = 1.0;
+    upper.makeCompressed();
+    CHECK_FALSE(cholesky.analyze(upper, s.groups));
+    CHECK(cholesky.factor_flops() == 0.0);
+    CHECK_FALSE(cholesky.factorize(s.lower));
+  }
   SECTION("nodes of mixed sizes, or larger than six unknowns") {
     std::vector<int> mixed = s.groups;
     mixed[2] = 1;  // node 0 has two unknowns, node 1 four
     CHECK_FALSE(cholesky.analyze(s.lower, mixed));
     BlockSystem big = random_block_system(random, 4, 7);
     CHECK_FALSE(cholesky.analyze(big.lower, big.groups));
+  }
+}
+
+TEST_CASE("node-block Cholesky: nodes that couple to nothing, explicit zeros", "[stress]") {
+  // One node of six unknowns, and five uncoupled nodes of two: no edge between nodes to order.
+  for (const int g : {6, 2}) {
+    const int nodes = g == 6 ? 1 : 5, n = nodes * g;
+    Eigen::MatrixXd dense = Eigen::MatrixXd::Zero(n, n);
+    for (int v = 0; v < nodes; ++v) {
+      Eigen::MatrixXd m = Eigen::MatrixXd::Random(g, g);
+      dense.block(v * g, v * g, g, g) = m * m.transpose() + Eigen::MatrixXd::Identity(g, g);
+    }
+    Eigen::SparseMatrix<double> lower = dense.triangularView<Eigen::Lower>().toDenseMatrix().sparseView();
+    // An explicit zero between the first two unknowns of node 0 (same pattern, value 0).
+    lower.coeffRef(1, 0) = 0.0;
+    dense(1, 0) = dense(0, 1) = 0.0;
+    lower.makeCompressed();
+    std::vector<int> groups;
+    for (int i = 0; i < n; ++i) groups.push_back(i / g);
+    NodeBlockCholesky cholesky;
+    REQUIRE(cholesky.analyze(lower, groups));
+    REQUIRE(cholesky.factorize(lower));
+    const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0);
+    const Eigen::VectorXd expected = dense.llt().solve(b);
+    CHECK((cholesky.solve(b) - expected).norm() <= 1e-12 * expected.norm());
   }
 }
 
@@ -169,4 +214,16 @@ TEST_CASE("sparse Cholesky: node blocks for small factorisations, CHOLMOD for la
   const Eigen::VectorXd rhs = Eigen::VectorXd::Ones(n);
   const Eigen::VectorXd expected = dense.llt().solve(rhs);
   CHECK((b.solve(rhs) - expected).norm() <= 1e-10 * expected.norm());
+
+  // Nodes of two sizes (a node of 3 unknowns, then nodes of 2): CHOLMOD, however small.
+  std::vector<int> mixed{0, 0, 0};
+  for (int i = 3; i < 41; ++i) mixed.push_back(1 + (i - 3) / 2);
+  const BlockSystem odd = random_block_system(random, 41, 1);
+  SparseCholesky c;
+  REQUIRE(c.analyze(odd.lower, mixed));
+  CHECK_FALSE(c.by_node_blocks());
+  REQUIRE(c.factorize(odd.lower));
+  const Eigen::VectorXd r41 = Eigen::VectorXd::Ones(41);
+  const Eigen::VectorXd e41 = odd.dense.llt().solve(r41);
+  CHECK((c.solve(r41) - e41).norm() <= 1e-10 * e41.norm());
 }

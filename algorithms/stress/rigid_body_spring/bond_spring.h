@@ -1,7 +1,7 @@
 #pragma once
-/// One bond's spring in global axes: the 6 x 6 stiffness of the zero-length spring at the bond centroid
-/// and the maps from its end nodes' unknowns to the relative motion across it (spring_system.h has
-/// the model). Shared by the per-component assembly and the whole-graph one (graph_stiffness.h), so
+/// One bond's spring in global axes: the translational and rotational 3 x 3 stiffness of the zero-length
+/// spring at the bond centroid and the levers from its end nodes' centroids (spring_system.h has the
+/// model). Shared by the per-component assembly and the whole-graph one (graph_stiffness.h), so
 /// both build K from the same numbers.
 
 #include "algorithms/bonds/support_graph.h"

@@ -27,8 +27,9 @@ struct SpringSolverSettings {
 
 /// Solves `k` u = `f` (k: both triangles, SPD, compressed). `u` holds the warm start (used by CG;
 /// non-finite entries are replaced by zero) and receives the solution. The report carries the residual
-/// |f - k u| / |f| against the full `k`, iterations, and convergence. `k` is taken over (left empty): it
-/// is kept with its split and factors for the next solve of the same K, without a copy.
+/// |f - k u| / |f| against the full `k`, iterations, and convergence. `k` is taken over: it is kept with
+/// its split and factors for the next solve of the same K, swapped in without a copy (so the caller's
+/// matrix is left empty, or unspecified when the reference path or the size bound keeps nothing).
 SolverReport solve_linear(Eigen::SparseMatrix<double>&& k, const Eigen::VectorXd& f, Eigen::VectorXd& u,
                           const SpringSolverSettings& settings);
 

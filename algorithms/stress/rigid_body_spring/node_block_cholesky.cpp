@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <limits>
 
 namespace shatter {
 
@@ -49,7 +50,10 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
     mark[static_cast<std::size_t>(v)] = v;
     for (int at = outer[g * v]; at < outer[g * v + g]; ++at) {
       const int w = inner[at] / g;
-      if (w < v) return false;  // not a lower triangle
+      if (w < v) {  // not a lower triangle
+        *this = NodeBlockCholesky{};
+        return false;
+      }
       if (mark[static_cast<std::size_t>(w)] == v) continue;
       mark[static_cast<std::size_t>(w)] = v;
       pairs.push_back(v);
@@ -215,6 +219,7 @@ bool NodeBlockCholesky::factorize_blocks(const double* values) {
 }
 
 bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
+  factorised_ = false;
   if (nodes_ == 0) return false;
   assert(lower.cols() == static_cast<Eigen::Index>(nodes_) * size_);
   if (work_.empty()) {  // the factor's storage, on the first factorisation (an analysis may go unused)
@@ -240,7 +245,9 @@ bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
     case 6: ok = factorize_blocks<6>(lower.valuePtr()); break;
     default: break;
   }
-  if (!ok) std::fill(work_.begin(), work_.end(), 0.0);  // an early exit leaves the workspace dirty
+  // A failure comes after the failing row's reach was used and zeroed, so the workspace is clean.
+  assert(std::all_of(work_.begin(), work_.end(), [](double x) { return x == 0.0; }));
+  factorised_ = ok;
   return ok;
 }
 
@@ -269,6 +276,7 @@ void NodeBlockCholesky::solve_blocks(double* x) const {
 }
 
 Eigen::VectorXd NodeBlockCholesky::solve(const Eigen::VectorXd& b) const {
+  if (!factorised_) return Eigen::VectorXd::Constant(b.size(), std::numeric_limits<double>::quiet_NaN());
   const int g = size_;
   assert(b.size() == static_cast<Eigen::Index>(nodes_) * g);
   Eigen::VectorXd x(b.size());  // in elimination order

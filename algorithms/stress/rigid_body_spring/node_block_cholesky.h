@@ -7,9 +7,10 @@
 /// blocks: 6 x 6 in a 3D body, 3 x 3 in each decoupled half of a planar wall. Factorising it by node
 /// blocks makes every step a fixed-size g x g operation that the compiler unrolls, and its symbolic
 /// analysis (elimination tree, column counts) runs on the node graph, g^2 times smaller than the
-/// scalar pattern. For the small and medium systems of one structure (up to some 1e7 flops) that beats
-/// CHOLMOD's supernodal factorisation, whose supernodes are then too narrow for BLAS to pay for its
-/// per-call overhead, and whose analysis works on the scalar pattern (docs/stress.md, section 3).
+/// scalar pattern. For the small and medium systems of one structure (up to about 1e8 flops,
+/// sparse_cholesky.h) that beats CHOLMOD's supernodal factorisation, whose supernodes are then too
+/// narrow for BLAS to pay for its per-call overhead, and whose analysis works on the scalar pattern
+/// (docs/stress.md, section 3).
 /// The factorisation is up-looking (row by row, as Eigen's SimplicialLLT, in blocks): row block k of L
 /// solves L(0:k-1, 0:k-1) L(k, 0:k-1)^T = K(0:k-1, k) over the reach of row k in the elimination tree.
 /// One object owns its pattern and factor; it is movable and copyable.
@@ -28,8 +29,9 @@ class NodeBlockCholesky {
 
   /// Orders the nodes of `lower` (the lower triangle of K, compressed columns, square) by AMD on the
   /// node graph and analyses the factor's pattern. `groups` holds one node id per column,
-  /// non-decreasing, ids from 0 on (empty: one node per unknown). False when the nodes are not all of
-  /// one size from 1 to kMaxNodeSize, or AMD fails.
+  /// non-decreasing, ids from 0 on (empty: one node per unknown). False when `lower` is empty or not a
+  /// lower triangle (an entry above the diagonal between two nodes), the nodes are not all of one size
+  /// from 1 to kMaxNodeSize, or AMD fails; the object is then empty.
   bool analyze(const Eigen::SparseMatrix<double>& lower, std::span<const int> groups = {});
   /// Floating-point operations of the numeric factorisation, counted as CHOLMOD counts them: the sum
   /// over the scalar columns of L of the square of their entry counts.
@@ -39,7 +41,7 @@ class NodeBlockCholesky {
   /// Factorises `lower`, whose pattern must be the analysed one. False if K is not positive definite
   /// (a diagonal block's Cholesky fails) or a value is not finite.
   bool factorize(const Eigen::SparseMatrix<double>& lower);
-  /// Solves K x = b with the current factor.
+  /// Solves K x = b with the current factor (NaN everywhere when the last factorisation failed).
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// The nodes in elimination order (AMD on the node graph), empty before analysis.
   [[nodiscard]] std::span<const int> node_order() const { return order_; }
@@ -51,6 +53,7 @@ class NodeBlockCholesky {
   template <int G>
   void solve_blocks(double* x) const;
 
+  bool factorised_ = false;  // the last factorisation succeeded
   int size_ = 0;       // g: unknowns per node
   int nodes_ = 0;      // N
   double flops_ = 0.0;

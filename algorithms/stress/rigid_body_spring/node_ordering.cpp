@@ -32,6 +32,10 @@ std::optional<std::vector<int>> node_amd_order(const Eigen::SparseMatrix<double>
   for (int g = 0; g < node_count; ++g)  // a node id with no column keeps the previous end
     outer[static_cast<std::size_t>(g) + 1] = std::max(outer[static_cast<std::size_t>(g) + 1], outer[static_cast<std::size_t>(g)]);
   std::vector<int> order(static_cast<std::size_t>(node_count));
+  if (rows.empty()) {  // no two nodes coupled: any order, and AMD refuses an empty pattern
+    for (int g = 0; g < node_count; ++g) order[static_cast<std::size_t>(g)] = g;
+    return order;
+  }
   const int status = amd_order(node_count, outer.data(), rows.data(), order.data(), nullptr, nullptr);
   if (status != AMD_OK && status != AMD_OK_BUT_JUMBLED) return std::nullopt;
   return order;

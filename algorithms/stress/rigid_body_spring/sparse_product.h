@@ -3,8 +3,8 @@
 /// Eigen's expressions give.
 ///
 /// Design note: a planar structure under in-plane loads has its out-of-plane unknowns exactly zero
-/// (half the columns of a wall's K), and a solve forms f - K u three times (two refinement steps and
-/// the reported residual). Eigen forms `k * u` column by column from +0, and `r = f - k * u` as r = f,
+/// (half the columns of a wall's K), and a solve forms f - K u two or three times (once per refinement
+/// step, and the reported residual when the last step was not stopped early). Eigen forms `k * u` column by column from +0, and `r = f - k * u` as r = f,
 /// then r_i += K_ij (-u_j) column by column. A skipped term is a signed zero, and adding a signed zero
 /// to a nonzero sum, or to +0, changes nothing, so the results agree bit for bit. The one exception
 /// is a row of `sparse_residual` whose f_i is -0 and whose every term is zero: Eigen may end it at
