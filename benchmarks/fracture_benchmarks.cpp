@@ -20,7 +20,6 @@
 #include "harness/metrics/fracture_metrics.h"
 
 #include <benchmark/benchmark.h>
-#include <malloc.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -137,12 +136,6 @@ void voronoi_replay(benchmark::State& state, const Solid& solid, int n) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  // Freed memory stays with the process, as in a game's long-running heap. With glibc's defaults a
-  // block above the mmap threshold goes back to the system when freed and the next solve page-faults
-  // it in again (zero-filled by the kernel): the cold stress benchmarks, which free every kept factor
-  // before each iteration, would measure that instead of the solve (docs/stress.md, section 4).
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);  // glibc's largest
-  mallopt(M_TRIM_THRESHOLD, 1 << 30);
   static std::vector<std::pair<std::string, Solid>> solids;
   for (const std::string& name : ladder()) {
     Result<Solid> solid = load_solid(mesh_dir() / name);
