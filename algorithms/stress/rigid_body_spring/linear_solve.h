@@ -17,7 +17,7 @@ namespace shatter {
 /// blocks (3D bodies fill far more) go to CG. See docs/stress.md, section 3.
 struct SpringSolverSettings {
   double direct_max_flops = 1e9;      ///< sparse Cholesky up to this many factorisation flops per block, CG above
-  int refinement_steps = 2;           ///< at most this many iterative-refinement steps against the full K after a direct solve
+  int refinement_steps = 2;           ///< at most this many refinement steps against the full K after a direct solve
   double refinement_gain = 4.0;       ///< refinement stops once a step cut the residual norm by less than this factor
   double cg_tolerance = 1e-10;        ///< relative residual |K_b u_b - f_b| / |f_b| at which CG stops, per block
   int cg_max_iterations = 20000;      ///< CG gives up (converged = false) after this many iterations

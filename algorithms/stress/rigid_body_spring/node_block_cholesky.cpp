@@ -74,7 +74,10 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
     row_column_[static_cast<std::size_t>(block)] = std::min(pv, pw);
     pair_block[p / 2] = block;
   }
-  for (int k = 0; k < nodes_; ++k) row_column_[static_cast<std::size_t>(row_start_[static_cast<std::size_t>(k) + 1] - 1)] = k;
+  for (int k = 0; k < nodes_; ++k) {
+    const int diagonal = row_start_[static_cast<std::size_t>(k) + 1] - 1;
+    row_column_[static_cast<std::size_t>(diagonal)] = k;
+  }
   // Elimination tree and column counts of L below the diagonal, in blocks (Liu's algorithm with the
   // row-by-row walk that Eigen's SimplicialCholesky uses).
   parent_.assign(static_cast<std::size_t>(nodes_), -1);
@@ -82,7 +85,8 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
   for (int k = 0; k < nodes_; ++k) {
     flag[static_cast<std::size_t>(k)] = k;
     for (int at = row_start_[static_cast<std::size_t>(k)]; at < row_start_[static_cast<std::size_t>(k) + 1]; ++at)
-      for (int j = row_column_[static_cast<std::size_t>(at)]; flag[static_cast<std::size_t>(j)] != k; j = parent_[static_cast<std::size_t>(j)]) {
+      for (int j = row_column_[static_cast<std::size_t>(at)]; flag[static_cast<std::size_t>(j)] != k;
+           j = parent_[static_cast<std::size_t>(j)]) {
         if (parent_[static_cast<std::size_t>(j)] == -1) parent_[static_cast<std::size_t>(j)] = k;
         ++column_count[static_cast<std::size_t>(j)];
         flag[static_cast<std::size_t>(j)] = k;
@@ -118,7 +122,8 @@ void NodeBlockCholesky::build_gather(const Eigen::SparseMatrix<double>& lower) {
   for (int v = 0; v < nodes_; ++v) {
     const int pv = position[static_cast<std::size_t>(v)];
     block_of[static_cast<std::size_t>(v)] = row_start_[static_cast<std::size_t>(pv) + 1] - 1;
-    for (; p < pairs.size() && pairs[p] == v; p += 2) block_of[static_cast<std::size_t>(pairs[p + 1])] = pair_block[p / 2];
+    for (; p < pairs.size() && pairs[p] == v; p += 2)
+      block_of[static_cast<std::size_t>(pairs[p + 1])] = pair_block[p / 2];
     for (int c = g * v; c < g * v + g; ++c)
       for (int at = outer[c]; at < outer[c + 1]; ++at) {
         const int r = inner[at], w = r / g;
@@ -137,8 +142,9 @@ std::size_t NodeBlockCholesky::factor_bytes() const {
   const std::size_t gg = static_cast<std::size_t>(size_) * static_cast<std::size_t>(size_);
   const std::size_t blocks = column_start_.empty() ? 0 : static_cast<std::size_t>(column_start_.back());
   const std::size_t nodes = static_cast<std::size_t>(nodes_);
+  const std::size_t gathered = row_start_.empty() ? 0 : static_cast<std::size_t>(row_start_.back()) * gg;
   return (blocks * gg + 2 * nodes * gg) * sizeof(double) +
-         (blocks + (row_start_.empty() ? 0 : static_cast<std::size_t>(row_start_.back())) * gg + row_column_.size() + 8 * nodes) * sizeof(int);
+         (blocks + gathered + row_column_.size() + 8 * nodes) * sizeof(int);
 }
 
 namespace {

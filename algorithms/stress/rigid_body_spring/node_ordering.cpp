@@ -29,8 +29,8 @@ std::optional<std::vector<int>> node_amd_order(const Eigen::SparseMatrix<double>
     }
     outer[static_cast<std::size_t>(gc) + 1] = static_cast<int>(rows.size());
   }
-  for (int g = 0; g < node_count; ++g)  // a node id with no column keeps the previous end
-    outer[static_cast<std::size_t>(g) + 1] = std::max(outer[static_cast<std::size_t>(g) + 1], outer[static_cast<std::size_t>(g)]);
+  for (std::size_t g = 0; g < static_cast<std::size_t>(node_count); ++g)  // an id with no column: empty
+    outer[g + 1] = std::max(outer[g + 1], outer[g]);
   std::vector<int> order(static_cast<std::size_t>(node_count));
   if (rows.empty()) {  // no two nodes coupled: any order, and AMD refuses an empty pattern
     for (int g = 0; g < node_count; ++g) order[static_cast<std::size_t>(g)] = g;
