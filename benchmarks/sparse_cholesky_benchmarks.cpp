@@ -14,6 +14,8 @@
 
 #include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace {
 
@@ -68,11 +70,17 @@ void cholesky_analyze(benchmark::State& state) {
   add_counters(state, w, factor);
 }
 
+/// `factor` analysed and factorised for `w`'s block; the benchmark is marked failed otherwise.
+template <class Factor>
+void prepare(benchmark::State& state, const WallBlock& w, Factor& factor) {
+  if (!factor.analyze(w.lower, w.groups) || !factor.factorize(w.lower)) state.SkipWithError("factorisation failed");
+}
+
 template <class Factor>
 void cholesky_factorize(benchmark::State& state) {
   const WallBlock& w = wall_block(static_cast<int>(state.range(0)));
   Factor factor;
-  if (!factor.analyze(w.lower, w.groups) || !factor.factorize(w.lower)) state.SkipWithError("factorisation failed");
+  prepare(state, w, factor);
   for (auto _ : state) benchmark::DoNotOptimize(factor.factorize(w.lower));
   add_counters(state, w, factor);
 }
@@ -81,7 +89,7 @@ template <class Factor>
 void cholesky_solve(benchmark::State& state) {
   const WallBlock& w = wall_block(static_cast<int>(state.range(0)));
   Factor factor;
-  if (!factor.analyze(w.lower, w.groups) || !factor.factorize(w.lower)) state.SkipWithError("factorisation failed");
+  prepare(state, w, factor);
   const Eigen::VectorXd b = Eigen::VectorXd::Ones(w.lower.cols());
   for (auto _ : state) benchmark::DoNotOptimize(factor.solve(b));
   add_counters(state, w, factor);
@@ -92,7 +100,7 @@ void cholesky_solve(benchmark::State& state) {
 void refinement_residuals(benchmark::State& state) {
   const WallBlock& w = wall_block(static_cast<int>(state.range(0)));
   NodeBlockCholesky factor;
-  if (!factor.analyze(w.lower, w.groups) || !factor.factorize(w.lower)) state.SkipWithError("factorisation failed");
+  prepare(state, w, factor);
   std::vector<double> residuals;
   for (auto _ : state) {
     residuals.clear();
