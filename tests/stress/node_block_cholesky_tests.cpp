@@ -1,7 +1,8 @@
 // The node-block sparse Cholesky (node_block_cholesky.h) against dense Cholesky solves of random
 // symmetric positive definite block-sparse matrices, its flop count on a pattern whose factor is known,
-// and its refusals: not positive definite, nodes of mixed sizes; and the choice between node blocks and
-// CHOLMOD (sparse_cholesky.h).
+// its refusals: not positive definite, nodes of mixed sizes; its refactorisation of the changed rows
+// only, against the rows where dense factors differ; and the choice between node blocks and CHOLMOD
+// (sparse_cholesky.h).
 
 #include "algorithms/core/random.h"
 #include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
@@ -11,6 +12,7 @@
 
 #include <Eigen/Dense>
 
+#include <span>
 #include <vector>
 
 using namespace shatter;
@@ -226,4 +228,78 @@ TEST_CASE("sparse Cholesky: node blocks for small factorisations, CHOLMOD for la
   const Eigen::VectorXd r41 = Eigen::VectorXd::Ones(41);
   const Eigen::VectorXd e41 = odd.dense.llt().solve(r41);
   CHECK((c.solve(r41) - e41).norm() <= 1e-10 * e41.norm());
+}
+
+namespace {
+
+/// Rows (in elimination order, node by node) where the dense Cholesky factors of P a P^T and of
+/// P b P^T differ in any entry, P ordering the nodes as `order` does.
+int dense_rows_that_differ(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, std::span<const int> order, int g) {
+  const Eigen::Index n = a.rows();
+  Eigen::PermutationMatrix<Eigen::Dynamic> p(n);  // unknown of node order[k] -> position k
+  for (std::size_t k = 0; k < order.size(); ++k)
+    for (int t = 0; t < g; ++t) p.indices()[order[k] * g + t] = static_cast<int>(k) * g + t;
+  const Eigen::MatrixXd la = Eigen::MatrixXd((p * a * p.transpose()).llt().matrixL());
+  const Eigen::MatrixXd lb = Eigen::MatrixXd((p * b * p.transpose()).llt().matrixL());
+  int rows = 0;
+  for (Eigen::Index k = 0; k < n / g; ++k)
+    if ((la.middleRows(k * g, g).array() != lb.middleRows(k * g, g).array()).any()) ++rows;
+  return rows;
+}
+
+}  // namespace
+
+TEST_CASE("node-block Cholesky: refactorising recomputes exactly the rows that change, as from scratch", "[stress]") {
+  // One node's diagonal block is stiffened (K + 0.5 I on its unknowns, still positive definite). The
+  // rows that must change are those where the dense factors of the two matrices differ; the refactor
+  // recomputes those and no others, and its factor solves bit for bit as a fresh factorisation.
+  SplitMix64 random(11);
+  for (const int g : {1, 3, 6}) {
+    const int nodes = 80;
+    const BlockSystem s = random_block_system(random, nodes, g);
+    NodeBlockCholesky cholesky;
+    REQUIRE(cholesky.analyze(s.lower, s.groups));
+    REQUIRE(cholesky.factorize(s.lower));
+    CHECK(cholesky.rows_refactorised() == nodes);
+    Eigen::VectorXd b(s.dense.rows());
+    for (Eigen::Index i = 0; i < b.size(); ++i) b[i] = random.uniform(-1, 1);
+    const Eigen::VectorXd before = cholesky.solve(b);
+
+    SECTION("nothing changed: no row recomputed, the same solution") {
+      REQUIRE(cholesky.factorize(s.lower));
+      CHECK(cholesky.rows_refactorised() == 0);
+      CHECK((cholesky.solve(b).array() == before.array()).all());
+    }
+    SECTION("one node stiffened, for several nodes in turn") {
+      for (const int v : {0, 17, 41, nodes - 1}) {
+        INFO("node size " << g << ", node " << v);
+        Eigen::SparseMatrix<double> stiffer = s.lower;
+        Eigen::MatrixXd dense = s.dense;
+        for (int t = 0; t < g; ++t) {
+          stiffer.coeffRef(v * g + t, v * g + t) += 0.5;
+          dense(v * g + t, v * g + t) += 0.5;
+        }
+        REQUIRE(cholesky.factorize(stiffer));
+        const int expected = dense_rows_that_differ(s.dense, dense, cholesky.node_order(), g);
+        CHECK(cholesky.rows_refactorised() == expected);
+        CHECK(expected < nodes);
+        NodeBlockCholesky fresh;
+        REQUIRE(fresh.analyze(stiffer, s.groups));
+        REQUIRE(fresh.factorize(stiffer));
+        CHECK((cholesky.solve(b).array() == fresh.solve(b).array()).all());
+        const Eigen::VectorXd x = dense.llt().solve(b);
+        CHECK((cholesky.solve(b) - x).norm() <= 1e-10 * x.norm());
+        REQUIRE(cholesky.factorize(s.lower));  // and back
+        CHECK((cholesky.solve(b).array() == before.array()).all());
+      }
+    }
+    SECTION("after a failed factorisation the next one starts from scratch") {
+      Eigen::SparseMatrix<double> indefinite = s.lower;
+      indefinite.coeffRef(0, 0) = -1.0;
+      CHECK_FALSE(cholesky.factorize(indefinite));
+      REQUIRE(cholesky.factorize(s.lower));
+      CHECK(cholesky.rows_refactorised() == nodes);
+      CHECK((cholesky.solve(b).array() == before.array()).all());
+    }
+  }
 }

@@ -53,6 +53,21 @@ void CascadeSolver::build(const SupportGraph& graph) {
     for (int at = outer[c]; at < outer[c + 1]; ++at)
       if (block_of[static_cast<std::size_t>(inner[at])] != block_of[static_cast<std::size_t>(c)])
         couplings_.push_back(Coupling{at, stiffness_->diagonal_index(inner[at]), stiffness_->diagonal_index(c)});
+  // Each coupling under its column's free node and its row's (unknowns are 6 per free node).
+  const std::size_t free_nodes = static_cast<std::size_t>(k.cols()) / 6;
+  node_coupling_start_.assign(free_nodes + 1, 0);
+  const auto node_of = [&](int diagonal) { return static_cast<std::size_t>(inner[diagonal]) / 6; };
+  for (const Coupling& c : couplings_) {
+    ++node_coupling_start_[node_of(c.column_diagonal) + 1];
+    ++node_coupling_start_[node_of(c.row_diagonal) + 1];
+  }
+  for (std::size_t v = 0; v < free_nodes; ++v) node_coupling_start_[v + 1] += node_coupling_start_[v];
+  node_couplings_.resize(static_cast<std::size_t>(node_coupling_start_.back()));
+  std::vector<int> next(node_coupling_start_.begin(), node_coupling_start_.end() - 1);
+  for (std::size_t i = 0; i < couplings_.size(); ++i) {
+    node_couplings_[static_cast<std::size_t>(next[node_of(couplings_[i].column_diagonal)]++)] = static_cast<int>(i);
+    node_couplings_[static_cast<std::size_t>(next[node_of(couplings_[i].row_diagonal)]++)] = static_cast<int>(i);
+  }
   // Each block's lower triangle keeps every stored entry of K inside the block (explicit zeros
   // included, so the pattern does not depend on which bonds are intact). Rows stay sorted: the
   // block's unknowns are ascending.
@@ -92,14 +107,26 @@ bool CascadeSolver::fits(const SupportGraph& graph, const Material& material, co
          settings_.refinement_gain == settings.refinement_gain && !settings.reference;
 }
 
-bool CascadeSolver::couplings_negligible() const {
+bool CascadeSolver::couplings_negligible() {
   const double* value = stiffness_->matrix().valuePtr();
   const double t2 = settings_.decoupling_tolerance * settings_.decoupling_tolerance;
-  for (const Coupling& c : couplings_) {
+  const auto negligible = [&](const Coupling& c) {
     const double v = value[c.value];
-    if (v != 0.0 && v * v > t2 * std::abs(value[c.row_diagonal] * value[c.column_diagonal])) return false;
+    return v == 0.0 || v * v <= t2 * std::abs(value[c.row_diagonal] * value[c.column_diagonal]);
+  };
+  bool ok = true;
+  if (!couplings_known_negligible_) {
+    for (const Coupling& c : couplings_) ok = ok && negligible(c);
+  } else {
+    for (const int v : stiffness_->rebuilt_nodes()) {
+      const std::size_t free = static_cast<std::size_t>(stiffness_->first_unknown(v)) / 6;
+      for (int at = node_coupling_start_[free]; ok && at < node_coupling_start_[free + 1]; ++at)
+        ok = negligible(couplings_[static_cast<std::size_t>(node_couplings_[static_cast<std::size_t>(at)])]);
+      if (!ok) break;
+    }
   }
-  return true;
+  couplings_known_negligible_ = ok;
+  return ok;
 }
 
 bool CascadeSolver::factorize(Block& block) {

@@ -71,7 +71,10 @@ class CascadeSolver final : public StressSolverState {
   };
 
   void build(const SupportGraph& graph);
-  [[nodiscard]] bool couplings_negligible() const;
+  /// True when every coupling is still below the decoupling tolerance. Only the couplings in the
+  /// columns or rows of the nodes the last assembly rebuilt can have changed (the others were checked
+  /// before, or are the intact K's, negligible by the split), unless a check failed since.
+  [[nodiscard]] bool couplings_negligible();
   bool factorize(Block& block);
 
   const SupportGraph* graph_;
@@ -82,6 +85,8 @@ class CascadeSolver final : public StressSolverState {
   std::optional<GraphStiffness> stiffness_;  // built by the first solve
   std::vector<Block> blocks_;
   std::vector<Coupling> couplings_;
+  std::vector<int> node_coupling_start_, node_couplings_;  // per free node: couplings in its columns or rows
+  bool couplings_known_negligible_ = true;                 // every coupling passed the last check
   std::mutex mutex_;
 };
 

@@ -1,6 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
 
 #include <algorithm>
+#include <cassert>
 
 namespace shatter {
 
@@ -56,8 +57,14 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
   springs_.resize(graph.bonds.size());
   blocks_.resize(graph.bonds.size());
   slots_.resize(graph.bonds.size());
+  bond_ends_.resize(graph.bonds.size());
+  node_bonds_.resize(graph.nodes.size());
   for (std::size_t b = 0; b < graph.bonds.size(); ++b) {
     const Bond& e = graph.bonds[b];
+    assert(e.a != e.b);
+    bond_ends_[b] = {e.a, e.b};
+    node_bonds_[static_cast<std::size_t>(e.a)].push_back(static_cast<int>(b));  // ascending: b ascends
+    node_bonds_[static_cast<std::size_t>(e.b)].push_back(static_cast<int>(b));
     const BondSpring& s = springs_[b] = bond_spring(graph, static_cast<int>(b), material);
     blocks_[b] = bond_blocks(s);
     const int ends[2] = {first_[static_cast<std::size_t>(e.a)], first_[static_cast<std::size_t>(e.b)]};
@@ -66,24 +73,79 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
   }
 }
 
-void GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
+void GraphStiffness::add_block(std::size_t b, std::size_t q) {
+  const Slot s = slots_[b][q];
+  if (s.start < 0) return;
+  const Matrix6& block = blocks_[b][q];
+  double* value = matrix_.valuePtr();
+  for (int k = 0; k < 6; ++k) {
+    double* column = value + s.start + k * s.stride;
+    for (int r = 0; r < 6; ++r) column[r] += block(r, k);
+  }
+}
+
+int GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
+  const std::size_t nodes = first_.size();
+  if (last_include_.empty()) {
+    assemble_all(include_bond, identity_node);
+  } else {
+    // The nodes at either end of a bond whose inclusion changed, and those whose identity changed.
+    const auto mark = [&](int v) {
+      if (first_[static_cast<std::size_t>(v)] >= 0 && !changed_[static_cast<std::size_t>(v)]) {
+        changed_[static_cast<std::size_t>(v)] = 1;
+        changed_nodes_.push_back(v);
+      }
+    };
+    changed_nodes_.clear();
+    for (std::size_t b = 0; b < blocks_.size(); ++b)
+      if ((include_bond[b] != 0) != (last_include_[b] != 0)) {
+        mark(bond_ends_[b][0]);
+        mark(bond_ends_[b][1]);
+      }
+    for (std::size_t v = 0; v < nodes; ++v)
+      if ((identity_node[v] != 0) != (last_identity_[v] != 0)) mark(static_cast<int>(v));
+    for (const int v : changed_nodes_) {
+      changed_[static_cast<std::size_t>(v)] = 0;
+      assemble_columns(v, include_bond, identity_node[static_cast<std::size_t>(v)] != 0);
+    }
+  }
+  last_include_.assign(include_bond.begin(), include_bond.end());
+  last_identity_.assign(identity_node.begin(), identity_node.end());
+  return static_cast<int>(changed_nodes_.size());
+}
+
+void GraphStiffness::assemble_all(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
   double* value = matrix_.valuePtr();
   std::fill(value, value + matrix_.nonZeros(), 0.0);
   for (std::size_t b = 0; b < blocks_.size(); ++b) {
     if (!include_bond[b]) continue;
-    for (std::size_t q = 0; q < 4; ++q) {
-      const Slot s = slots_[b][q];
-      if (s.start < 0) continue;
-      const Matrix6& block = blocks_[b][q];
-      for (int k = 0; k < 6; ++k) {
-        double* column = value + s.start + k * s.stride;
-        for (int r = 0; r < 6; ++r) column[r] += block(r, k);
-      }
-    }
+    for (std::size_t q = 0; q < 4; ++q) add_block(b, q);
   }
-  for (std::size_t v = 0; v < identity_node.size(); ++v)
-    if (identity_node[v] && first_[v] >= 0)
+  changed_nodes_.clear();
+  for (std::size_t v = 0; v < identity_node.size(); ++v) {
+    if (first_[v] < 0) continue;
+    changed_nodes_.push_back(static_cast<int>(v));
+    if (identity_node[v])
       for (int k = 0; k < 6; ++k) value[diagonal_[static_cast<std::size_t>(first_[v] + k)]] = 1.0;
+  }
+  changed_.assign(first_.size(), 0);
+}
+
+void GraphStiffness::assemble_columns(int v, std::span<const std::uint8_t> include_bond, bool identity) {
+  // Column node v holds blocks (a, a), (b, a) of the bonds whose end a is v, (a, b), (b, b) of those
+  // whose end b is v. Added in ascending bond order, as assemble_all adds them.
+  const int first = first_[static_cast<std::size_t>(v)];
+  const int* outer = matrix_.outerIndexPtr();
+  double* value = matrix_.valuePtr();
+  std::fill(value + outer[first], value + outer[first + 6], 0.0);
+  for (const int b : node_bonds_[static_cast<std::size_t>(v)]) {
+    if (!include_bond[static_cast<std::size_t>(b)]) continue;
+    const std::size_t q0 = bond_ends_[static_cast<std::size_t>(b)][0] == v ? 0 : 2;
+    add_block(static_cast<std::size_t>(b), q0);
+    add_block(static_cast<std::size_t>(b), q0 + 1);
+  }
+  if (identity)
+    for (int k = 0; k < 6; ++k) value[diagonal_[static_cast<std::size_t>(first + k)]] = 1.0;
 }
 
 }  // namespace shatter

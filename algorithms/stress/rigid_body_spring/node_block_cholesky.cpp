@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace shatter {
@@ -34,8 +35,9 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
   size_ = g;
   nodes_ = node_count;
   order_ = std::move(*order);
-  std::vector<int> position(static_cast<std::size_t>(nodes_));
-  for (int k = 0; k < nodes_; ++k) position[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
+  position_.resize(static_cast<std::size_t>(nodes_));
+  for (int k = 0; k < nodes_; ++k) position_[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
+  const std::vector<int>& position = position_;
 
   // K's blocks by row of the elimination order: block (k, i) = (later, earlier) position of a node pair
   // with entries in lower. Lower holds each pair once (in the columns of its earlier node in the
@@ -111,8 +113,7 @@ void NodeBlockCholesky::build_gather(const Eigen::SparseMatrix<double>& lower) {
   const int g = size_;
   const int* outer = lower.outerIndexPtr();
   const int* inner = lower.innerIndexPtr();
-  std::vector<int> position(static_cast<std::size_t>(nodes_));
-  for (int k = 0; k < nodes_; ++k) position[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
+  const std::vector<int>& position = position_;
   const std::vector<int>& pairs = pairs_;
   const std::vector<int>& pair_block = pair_block_;
   const int gg = g * g;
@@ -136,6 +137,48 @@ void NodeBlockCholesky::build_gather(const Eigen::SparseMatrix<double>& lower) {
   }
   pairs_ = {};  // not needed again
   pair_block_ = {};
+}
+
+void NodeBlockCholesky::build_rows() {
+  // The rows of each column of L, ascending: row k enters the columns of its reach in the elimination
+  // tree (the symbolic part of the up-looking factorisation), so that any row can be recomputed alone.
+  std::vector<int> fill(column_start_.begin(), column_start_.end() - 1);
+  std::fill(flag_.begin(), flag_.end(), -1);
+  for (int k = 0; k < nodes_; ++k) {
+    flag_[static_cast<std::size_t>(k)] = k;
+    const int last = row_start_[static_cast<std::size_t>(k) + 1] - 1;
+    for (int at = row_start_[static_cast<std::size_t>(k)]; at < last; ++at)
+      for (int j = row_column_[static_cast<std::size_t>(at)]; flag_[static_cast<std::size_t>(j)] != k;
+           j = parent_[static_cast<std::size_t>(j)]) {
+        rows_[static_cast<std::size_t>(fill[static_cast<std::size_t>(j)]++)] = k;
+        flag_[static_cast<std::size_t>(j)] = k;
+      }
+  }
+}
+
+void NodeBlockCholesky::mark_changed_rows(const Eigen::SparseMatrix<double>& lower) {
+  const int g = size_;
+  const int* outer = lower.outerIndexPtr();
+  const int* inner = lower.innerIndexPtr();
+  const double* values = lower.valuePtr();
+  const double* last = last_values_.data();
+  std::fill(stale_.begin(), stale_.end(), std::uint8_t{0});
+  for (int c = 0; c < static_cast<int>(lower.cols()); ++c)
+    for (int at = outer[c]; at < outer[c + 1]; ++at)
+      // Bit by bit (a zero's sign or a NaN payload is a change): the kept rows must be exactly those
+      // a factorisation from scratch would compute.
+      if (std::memcmp(values + at, last + at, sizeof(double)) != 0) {
+        // The entry is K(k, i) for the later k of its two nodes' positions: row k reads it.
+        const int pc = position_[static_cast<std::size_t>(c / g)];
+        const int pr = position_[static_cast<std::size_t>(inner[at] / g)];
+        stale_[static_cast<std::size_t>(std::max(pc, pr))] = 1;
+      }
+  // Row k reads the rows j of its pattern (L(k, j) != 0), all of them its descendants, and the parent
+  // of j reads j (it is the first row of column j): the rows to recompute are the changed ones and
+  // their ancestors. Parents come later, so one ascending pass closes the set.
+  for (int k = 0; k < nodes_; ++k)
+    if (stale_[static_cast<std::size_t>(k)] && parent_[static_cast<std::size_t>(k)] >= 0)
+      stale_[static_cast<std::size_t>(parent_[static_cast<std::size_t>(k)])] = 1;
 }
 
 std::size_t NodeBlockCholesky::factor_bytes() const {
@@ -166,12 +209,12 @@ Eigen::Matrix<double, G, G> lower_inverse(const Eigen::Matrix<double, G, G>& l) 
 }  // namespace
 
 template <int G>
-bool NodeBlockCholesky::factorize_blocks(const double* values) {
+bool NodeBlockCholesky::factorize_blocks(const double* values, bool all_rows) {
   using Block = Eigen::Matrix<double, G, G>;
   using BlockMap = Eigen::Map<Block>;
   constexpr int kEntries = G * G;
   std::fill(flag_.begin(), flag_.end(), -1);
-  for (int j = 0; j < nodes_; ++j) fill_[static_cast<std::size_t>(j)] = column_start_[static_cast<std::size_t>(j)];
+  rows_refactorised_ = 0;
   const auto gathered = [&](int at) {
     Block b;
     const int* from = gather_.data() + static_cast<std::size_t>(at) * kEntries;
@@ -179,6 +222,8 @@ bool NodeBlockCholesky::factorize_blocks(const double* values) {
     return b;
   };
   for (int k = 0; k < nodes_; ++k) {
+    if (!all_rows && !stale_[static_cast<std::size_t>(k)]) continue;
+    ++rows_refactorised_;
     // Scatter row k of K into the workspace and collect the reach of row k in the elimination tree,
     // in topological order (pattern_[top .. N - 1]).
     int top = nodes_;
@@ -198,20 +243,19 @@ bool NodeBlockCholesky::factorize_blocks(const double* values) {
     for (; top < nodes_; ++top) {
       const int j = pattern_[static_cast<std::size_t>(top)];
       BlockMap x(work_.data() + static_cast<std::size_t>(j) * kEntries);
-      // L(k, j) = X L(j, j)^-T, then X(i) -= L(k, j) L(i, j)^T for the rows i < k of column j.
+      // L(k, j) = X L(j, j)^-T, then X(i) -= L(k, j) L(i, j)^T for the rows i < k of column j (the
+      // column's rows are ascending, and k is among them).
       const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
       const Block l_kj = (x * inverse_jj.transpose()).eval();
       x.setZero();
-      const int end = fill_[static_cast<std::size_t>(j)];
-      for (int q = column_start_[static_cast<std::size_t>(j)]; q < end; ++q) {
+      int q = column_start_[static_cast<std::size_t>(j)];
+      for (; rows_[static_cast<std::size_t>(q)] != k; ++q) {
         const Eigen::Map<const Block> l_ij(blocks_.data() + static_cast<std::size_t>(q) * kEntries);
         BlockMap(work_.data() + static_cast<std::size_t>(rows_[static_cast<std::size_t>(q)]) * kEntries).noalias() -=
             l_kj * l_ij.transpose();
       }
       d.noalias() -= l_kj * l_kj.transpose();
-      rows_[static_cast<std::size_t>(end)] = k;
-      BlockMap(blocks_.data() + static_cast<std::size_t>(end) * kEntries) = l_kj;
-      fill_[static_cast<std::size_t>(j)] = end + 1;
+      BlockMap(blocks_.data() + static_cast<std::size_t>(q) * kEntries) = l_kj;
     }
     const Eigen::LLT<Block, Eigen::Lower> llt(d);
     if (llt.info() != Eigen::Success) return false;
@@ -225,6 +269,7 @@ bool NodeBlockCholesky::factorize_blocks(const double* values) {
 }
 
 bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
+  const bool after_success = factorised_;
   factorised_ = false;
   if (nodes_ == 0) return false;
   assert(lower.cols() == static_cast<Eigen::Index>(nodes_) * size_);
@@ -239,21 +284,29 @@ bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
     flag_.resize(nodes);
     stack_.resize(nodes);
     pattern_.resize(nodes);
-    fill_.resize(nodes);
+    stale_.resize(nodes);
+    build_rows();
   }
+  const std::size_t entries = static_cast<std::size_t>(lower.nonZeros());
+  const bool all_rows = !after_success || last_values_.size() != entries;
+  if (!all_rows) mark_changed_rows(lower);
   bool ok = false;
   switch (size_) {
-    case 1: ok = factorize_blocks<1>(lower.valuePtr()); break;
-    case 2: ok = factorize_blocks<2>(lower.valuePtr()); break;
-    case 3: ok = factorize_blocks<3>(lower.valuePtr()); break;
-    case 4: ok = factorize_blocks<4>(lower.valuePtr()); break;
-    case 5: ok = factorize_blocks<5>(lower.valuePtr()); break;
-    case 6: ok = factorize_blocks<6>(lower.valuePtr()); break;
+    case 1: ok = factorize_blocks<1>(lower.valuePtr(), all_rows); break;
+    case 2: ok = factorize_blocks<2>(lower.valuePtr(), all_rows); break;
+    case 3: ok = factorize_blocks<3>(lower.valuePtr(), all_rows); break;
+    case 4: ok = factorize_blocks<4>(lower.valuePtr(), all_rows); break;
+    case 5: ok = factorize_blocks<5>(lower.valuePtr(), all_rows); break;
+    case 6: ok = factorize_blocks<6>(lower.valuePtr(), all_rows); break;
     default: break;
   }
   // A failure comes after the failing row's reach was used and zeroed, so the workspace is clean.
   assert(std::all_of(work_.begin(), work_.end(), [](double x) { return x == 0.0; }));
   factorised_ = ok;
+  if (ok)
+    last_values_.assign(lower.valuePtr(), lower.valuePtr() + entries);
+  else
+    last_values_.clear();
   return ok;
 }
 

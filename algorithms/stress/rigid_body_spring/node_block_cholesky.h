@@ -13,10 +13,17 @@
 /// (docs/stress.md, section 3).
 /// The factorisation is up-looking (row by row, as Eigen's SimplicialLLT, in blocks): row block k of L
 /// solves L(0:k-1, 0:k-1) L(k, 0:k-1)^T = K(0:k-1, k) over the reach of row k in the elimination tree.
+/// Row k therefore depends only on row k of K and on the rows of its descendants in that tree, so a
+/// factorisation of new values after a successful one recomputes only the rows whose values of K
+/// changed and their ancestors; every other row is kept. The kept rows are the ones a
+/// factorisation from scratch would compute, bit for bit, and so is the whole factor. That is what a
+/// cascade of breaking bonds needs: each round changes the blocks of a few nodes (docs/stress.md,
+/// section 3).
 /// One object owns its pattern and factor; it is movable and copyable.
 
 #include <Eigen/SparseCore>
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -39,8 +46,12 @@ class NodeBlockCholesky {
   /// Bytes the factor and its pattern take once factorised.
   [[nodiscard]] std::size_t factor_bytes() const;
   /// Factorises `lower`, whose pattern must be the analysed one. False if K is not positive definite
-  /// (a diagonal block's Cholesky fails) or a value is not finite.
+  /// (a diagonal block's Cholesky fails) or a value is not finite. After a successful factorisation,
+  /// only the rows whose values differ from the last ones (bit by bit) and their ancestors in the
+  /// elimination tree are recomputed.
   bool factorize(const Eigen::SparseMatrix<double>& lower);
+  /// Node rows of L the last factorisation computed (all of them when it started from scratch).
+  [[nodiscard]] int rows_refactorised() const { return rows_refactorised_; }
   /// Solves K x = b with the current factor (NaN everywhere when the last factorisation failed).
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// The nodes in elimination order (AMD on the node graph), empty before analysis.
@@ -48,16 +59,22 @@ class NodeBlockCholesky {
 
  private:
   void build_gather(const Eigen::SparseMatrix<double>& lower);
+  void build_rows();
+  /// Marks in stale_ the rows of L that read a value of `lower` different from last_values_, and their
+  /// ancestors.
+  void mark_changed_rows(const Eigen::SparseMatrix<double>& lower);
   template <int G>
-  bool factorize_blocks(const double* values);
+  bool factorize_blocks(const double* values, bool all_rows);
   template <int G>
   void solve_blocks(double* x) const;
 
   bool factorised_ = false;  // the last factorisation succeeded
   int size_ = 0;       // g: unknowns per node
   int nodes_ = 0;      // N
+  int rows_refactorised_ = 0;
   double flops_ = 0.0;
   std::vector<int> order_;       // elimination position -> node (its unknowns are size_ * node + t)
+  std::vector<int> position_;    // node -> elimination position
   std::vector<int> parent_;      // elimination tree over positions, -1 at a root
   std::vector<int> column_start_;// N + 1: first block of each column of L below the diagonal
   // K's blocks by row of the elimination order: row k holds K(k, i) for i <= k (the diagonal last);
@@ -65,13 +82,17 @@ class NodeBlockCholesky {
   // The diagonal block gathers its lower triangle only (all its Cholesky reads). gather_ is built by the
   // first factorisation, from the node pairs of lower (v, w > v, by v) and their blocks.
   std::vector<int> row_start_, row_column_, gather_, pairs_, pair_block_;
-  // The factor: rows and g x g blocks (column-major) of L below the diagonal, column by column, and
-  // the inverses of the diagonal blocks (lower triangular; every use of L(j, j) is a solve with it).
+  // The factor: rows and g x g blocks (column-major) of L below the diagonal, column by column (rows
+  // ascending, known from the first factorisation on), and the inverses of the diagonal blocks (lower
+  // triangular; every use of L(j, j) is a solve with it).
   std::vector<int> rows_;
   std::vector<double> blocks_, diagonal_;
+  // The values of the last successful factorisation (empty otherwise) and the rows to recompute.
+  std::vector<double> last_values_;
+  std::vector<std::uint8_t> stale_;
   // Workspace of the factorisation.
   std::vector<double> work_;
-  std::vector<int> flag_, stack_, pattern_, fill_;
+  std::vector<int> flag_, stack_, pattern_;
 };
 
 }  // namespace shatter
