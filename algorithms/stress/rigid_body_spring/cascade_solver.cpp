@@ -49,25 +49,28 @@ void CascadeSolver::build(const SupportGraph& graph) {
   }
   const int* outer = k.outerIndexPtr();
   const int* inner = k.innerIndexPtr();
-  for (int c = 0; c < k.cols(); ++c)
-    for (int at = outer[c]; at < outer[c + 1]; ++at)
-      if (block_of[static_cast<std::size_t>(inner[at])] != block_of[static_cast<std::size_t>(c)])
-        couplings_.push_back(Coupling{at, stiffness_->diagonal_index(inner[at]), stiffness_->diagonal_index(c)});
-  // Each coupling under its column's free node and its row's (unknowns are 6 per free node).
+  // The couplings: entries between blocks, but not those zero whatever breaks (most of them: the
+  // split is mostly along exact zeros, as between the in-plane and out-of-plane halves of a planar
+  // wall). Each is listed under its column's free node and its row's (unknowns are 6 per free node),
+  // by counting.
   const std::size_t free_nodes = static_cast<std::size_t>(k.cols()) / 6;
   node_coupling_start_.assign(free_nodes + 1, 0);
-  const auto node_of = [&](int diagonal) { return static_cast<std::size_t>(inner[diagonal]) / 6; };
-  for (const Coupling& c : couplings_) {
-    ++node_coupling_start_[node_of(c.column_diagonal) + 1];
-    ++node_coupling_start_[node_of(c.row_diagonal) + 1];
-  }
+  std::vector<int> ends;  // column node, row node of each coupling
+  for (int c = 0; c < k.cols(); ++c)
+    for (int at = outer[c]; at < outer[c + 1]; ++at)
+      if (block_of[static_cast<std::size_t>(inner[at])] != block_of[static_cast<std::size_t>(c)] &&
+          stiffness_->may_be_nonzero(at)) {
+        couplings_.push_back(Coupling{at, stiffness_->diagonal_index(inner[at]), stiffness_->diagonal_index(c)});
+        ends.push_back(c / 6);
+        ends.push_back(inner[at] / 6);
+        ++node_coupling_start_[static_cast<std::size_t>(c / 6) + 1];
+        ++node_coupling_start_[static_cast<std::size_t>(inner[at] / 6) + 1];
+      }
   for (std::size_t v = 0; v < free_nodes; ++v) node_coupling_start_[v + 1] += node_coupling_start_[v];
   node_couplings_.resize(static_cast<std::size_t>(node_coupling_start_.back()));
   std::vector<int> next(node_coupling_start_.begin(), node_coupling_start_.end() - 1);
-  for (std::size_t i = 0; i < couplings_.size(); ++i) {
-    node_couplings_[static_cast<std::size_t>(next[node_of(couplings_[i].column_diagonal)]++)] = static_cast<int>(i);
-    node_couplings_[static_cast<std::size_t>(next[node_of(couplings_[i].row_diagonal)]++)] = static_cast<int>(i);
-  }
+  for (std::size_t i = 0; i < ends.size(); ++i)
+    node_couplings_[static_cast<std::size_t>(next[static_cast<std::size_t>(ends[i])]++)] = static_cast<int>(i / 2);
   // Each block's lower triangle keeps every stored entry of K inside the block (explicit zeros
   // included, so the pattern does not depend on which bonds are intact). Rows stay sorted: the
   // block's unknowns are ascending.

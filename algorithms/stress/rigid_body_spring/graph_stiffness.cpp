@@ -71,6 +71,15 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
     for (int x = 0; x < 2; ++x)
       for (int y = 0; y < 2; ++y) slots_[b][static_cast<std::size_t>(2 * x + y)] = slot(ends[y], ends[x]);
   }
+  structural_.assign(static_cast<std::size_t>(outer.back()), 0);
+  for (std::size_t b = 0; b < blocks_.size(); ++b)
+    for (std::size_t q = 0; q < 4; ++q) {
+      const Slot s = slots_[b][q];
+      if (s.start < 0) continue;
+      for (int k = 0; k < 6; ++k)
+        for (int r = 0; r < 6; ++r)
+          if (blocks_[b][q](r, k) != 0.0) structural_[static_cast<std::size_t>(s.start + k * s.stride + r)] = 1;
+    }
 }
 
 void GraphStiffness::add_block(std::size_t b, std::size_t q) {

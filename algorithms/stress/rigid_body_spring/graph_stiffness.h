@@ -38,6 +38,9 @@ class GraphStiffness {
   [[nodiscard]] int diagonal_index(int i) const { return diagonal_[static_cast<std::size_t>(i)]; }
   /// The spring of bond `b`.
   [[nodiscard]] const BondSpring& spring(int b) const { return springs_[static_cast<std::size_t>(b)]; }
+  /// False when no bond's block has a nonzero at value index `at`: the entry is zero whatever the bonds
+  /// included (off the diagonal; the identity rows only set diagonal entries).
+  [[nodiscard]] bool may_be_nonzero(int at) const { return structural_[static_cast<std::size_t>(at)] != 0; }
 
   /// K = the springs of the bonds with `include_bond[b] != 0` (#bonds) plus the identity on the unknowns
   /// of the nodes with `identity_node[v] != 0` (#nodes; such nodes must have no included bond). Returns
@@ -62,6 +65,7 @@ class GraphStiffness {
   std::vector<std::array<Matrix6, 4>> blocks_;// #bonds: (y, x) = (a, a), (b, a), (a, b), (b, b)
   std::vector<std::array<Slot, 4>> slots_;    // #bonds, same order
   std::vector<std::array<int, 2>> bond_ends_; // #bonds: a, b
+  std::vector<std::uint8_t> structural_;      // #values: some bond's block is nonzero there
   std::vector<std::vector<int>> node_bonds_;  // #nodes: bonds at the node, ascending
   Eigen::SparseMatrix<double> matrix_;
   // The flags of the last assembly (empty before the first) and the nodes to rebuild.
