@@ -36,7 +36,7 @@ BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& m) {
   return s;
 }
 
-std::array<Matrix6, 4> bond_blocks(const BondSpring& s) {
+void bond_blocks(const BondSpring& s, std::array<Matrix6, 4>& out) {
   // With map = sign [I, -R; 0, I] (R = [lever]x, R^T = -R) and the spring diag(T, Q):
   // map_y^T diag(T, Q) map_x = sign_x sign_y [T, -T R_x; R_y T, Q - R_y T R_x].
   const Eigen::Matrix3d& t = s.translation;
@@ -44,7 +44,6 @@ std::array<Matrix6, 4> bond_blocks(const BondSpring& s) {
   const Eigen::Matrix3d r[2] = {skew(s.lever_a), skew(s.lever_b)};
   const Eigen::Matrix3d tr[2] = {t * r[0], t * r[1]};  // T R_x
   const Eigen::Matrix3d rt[2] = {r[0] * t, r[1] * t};  // R_y T
-  std::array<Matrix6, 4> out;
   for (int x = 0; x < 2; ++x)
     for (int y = 0; y < 2; ++y) {
       const double sign = x == y ? 1.0 : -1.0;  // sign_a = -1, sign_b = +1
@@ -54,7 +53,6 @@ std::array<Matrix6, 4> bond_blocks(const BondSpring& s) {
       k.bottomLeftCorner<3, 3>() = sign * rt[y];
       k.bottomRightCorner<3, 3>() = sign * (q - rt[y] * r[x]);
     }
-  return out;
 }
 
 BondForces bond_forces(const Bond& e, const BondSpring& s, const double* u_a, const double* u_b) {

@@ -49,17 +49,15 @@ void CascadeSolver::build(const SupportGraph& graph) {
   }
   const int* outer = k.outerIndexPtr();
   const int* inner = k.innerIndexPtr();
-  // The couplings: entries between blocks, but not those zero whatever breaks (most of them: the
-  // split is mostly along exact zeros, as between the in-plane and out-of-plane halves of a planar
-  // wall). Each is listed under its column's free node and its row's (unknowns are 6 per free node),
-  // by counting.
+  // The couplings: entries between blocks (K stores no entry that every bond leaves zero, so a split
+  // along such zeros, as between the halves of a planar wall, has none). Each is listed under its
+  // column's free node and its row's (unknowns are 6 per free node), by counting.
   const std::size_t free_nodes = static_cast<std::size_t>(k.cols()) / 6;
   node_coupling_start_.assign(free_nodes + 1, 0);
   std::vector<int> ends;  // column node, row node of each coupling
   for (int c = 0; c < k.cols(); ++c)
     for (int at = outer[c]; at < outer[c + 1]; ++at)
-      if (block_of[static_cast<std::size_t>(inner[at])] != block_of[static_cast<std::size_t>(c)] &&
-          stiffness_->may_be_nonzero(at)) {
+      if (block_of[static_cast<std::size_t>(inner[at])] != block_of[static_cast<std::size_t>(c)]) {
         couplings_.push_back(Coupling{at, stiffness_->diagonal_index(inner[at]), stiffness_->diagonal_index(c)});
         ends.push_back(c / 6);
         ends.push_back(inner[at] / 6);

@@ -10,87 +10,34 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
   int nf = 0;
   for (std::size_t v = 0; v < graph.nodes.size(); ++v)
     if (!graph.nodes[v].anchored) first_[v] = 6 * nf++;
-  const int n = 6 * nf;
-
-  // Column pattern: node i's columns hold the 6 rows of i and of every free neighbour, sorted.
-  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(nf));
-  for (std::size_t v = 0; v < graph.nodes.size(); ++v)
-    if (first_[v] >= 0) neighbours[static_cast<std::size_t>(first_[v] / 6)].push_back(first_[v] / 6);
-  for (const Bond& e : graph.bonds) {
-    const int la = first_[static_cast<std::size_t>(e.a)], lb = first_[static_cast<std::size_t>(e.b)];
-    if (la >= 0 && lb >= 0) {
-      neighbours[static_cast<std::size_t>(la / 6)].push_back(lb / 6);
-      neighbours[static_cast<std::size_t>(lb / 6)].push_back(la / 6);
-    }
-  }
-  std::vector<int> outer(static_cast<std::size_t>(n) + 1, 0);
-  for (int i = 0; i < nf; ++i) {
-    auto& list = neighbours[static_cast<std::size_t>(i)];
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    for (int k = 0; k < 6; ++k) outer[static_cast<std::size_t>(6 * i + k + 1)] = 6 * static_cast<int>(list.size());
-  }
-  for (int c = 0; c < n; ++c) outer[static_cast<std::size_t>(c + 1)] += outer[static_cast<std::size_t>(c)];
-  matrix_.resize(n, n);
-  matrix_.resizeNonZeros(outer.back());
-  std::copy(outer.begin(), outer.end(), matrix_.outerIndexPtr());
-  int* inner = matrix_.innerIndexPtr();
-  std::fill(matrix_.valuePtr(), matrix_.valuePtr() + outer.back(), 0.0);
-  diagonal_.assign(static_cast<std::size_t>(n), -1);
-  for (int i = 0; i < nf; ++i)
-    for (int k = 0; k < 6; ++k) {
-      int at = outer[static_cast<std::size_t>(6 * i + k)];
-      for (const int j : neighbours[static_cast<std::size_t>(i)])
-        for (int r = 0; r < 6; ++r) {
-          if (6 * j + r == 6 * i + k) diagonal_[static_cast<std::size_t>(6 * i + k)] = at;
-          inner[at++] = 6 * j + r;
-        }
-    }
-  // Block (row node j, column node i) starts in column 6 i at slot j of i's neighbour list.
-  auto slot = [&](int j, int i) {
-    if (j < 0 || i < 0) return Slot{};
-    const auto& list = neighbours[static_cast<std::size_t>(i / 6)];
-    const int at = static_cast<int>(std::lower_bound(list.begin(), list.end(), j / 6) - list.begin());
-    return Slot{outer[static_cast<std::size_t>(i)] + 6 * at, 6 * static_cast<int>(list.size())};
-  };
 
   springs_.resize(graph.bonds.size());
   blocks_.resize(graph.bonds.size());
-  slots_.resize(graph.bonds.size());
   bond_ends_.resize(graph.bonds.size());
   node_bonds_.resize(graph.nodes.size());
+  std::vector<std::array<int, 2>> free_ends(graph.bonds.size());
+  std::vector<std::array<std::uint64_t, 4>> masks(graph.bonds.size());
   for (std::size_t b = 0; b < graph.bonds.size(); ++b) {
     const Bond& e = graph.bonds[b];
     assert(e.a != e.b);
+    springs_[b] = bond_spring(graph, static_cast<int>(b), material);
+    bond_blocks(springs_[b], blocks_[b]);
+    for (std::size_t q = 0; q < 4; ++q) masks[b][q] = nonzero_mask(blocks_[b][q]);
     bond_ends_[b] = {e.a, e.b};
     node_bonds_[static_cast<std::size_t>(e.a)].push_back(static_cast<int>(b));  // ascending: b ascends
     node_bonds_[static_cast<std::size_t>(e.b)].push_back(static_cast<int>(b));
-    const BondSpring& s = springs_[b] = bond_spring(graph, static_cast<int>(b), material);
-    blocks_[b] = bond_blocks(s);
-    const int ends[2] = {first_[static_cast<std::size_t>(e.a)], first_[static_cast<std::size_t>(e.b)]};
-    for (int x = 0; x < 2; ++x)
-      for (int y = 0; y < 2; ++y) slots_[b][static_cast<std::size_t>(2 * x + y)] = slot(ends[y], ends[x]);
+    const int la = first_[static_cast<std::size_t>(e.a)], lb = first_[static_cast<std::size_t>(e.b)];
+    free_ends[b] = {la >= 0 ? la / 6 : -1, lb >= 0 ? lb / 6 : -1};
   }
-  structural_.assign(static_cast<std::size_t>(outer.back()), 0);
-  for (std::size_t b = 0; b < blocks_.size(); ++b)
-    for (std::size_t q = 0; q < 4; ++q) {
-      const Slot s = slots_[b][q];
-      if (s.start < 0) continue;
-      for (int k = 0; k < 6; ++k)
-        for (int r = 0; r < 6; ++r)
-          if (blocks_[b][q](r, k) != 0.0) structural_[static_cast<std::size_t>(s.start + k * s.stride + r)] = 1;
-    }
+  StiffnessPattern pattern = build_stiffness_pattern(nf, free_ends, masks);
+  matrix_ = std::move(pattern.matrix);
+  diagonal_ = std::move(pattern.diagonal);
+  pairs_ = std::move(pattern.pairs);
+  bond_pairs_ = std::move(pattern.bond_pairs);
 }
 
 void GraphStiffness::add_block(std::size_t b, std::size_t q) {
-  const Slot s = slots_[b][q];
-  if (s.start < 0) return;
-  const Matrix6& block = blocks_[b][q];
-  double* value = matrix_.valuePtr();
-  for (int k = 0; k < 6; ++k) {
-    double* column = value + s.start + k * s.stride;
-    for (int r = 0; r < 6; ++r) column[r] += block(r, k);
-  }
+  if (const int p = bond_pairs_[b][q]; p >= 0) add_pair_block(matrix_.valuePtr(), blocks_[b][q], pairs_[static_cast<std::size_t>(p)]);
 }
 
 int GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {

@@ -1,6 +1,6 @@
 #pragma once
 /// The stiffness matrix of every free node of a support graph in one fixed compressed-column pattern:
-/// the pattern of the intact graph, whatever is broken.
+/// the pattern of the intact graph (stiffness_pattern.h), whatever is broken.
 ///
 /// Design note: a cascade changes K only by removing bonds, so the pattern, the scatter positions of
 /// every bond's 6 x 6 blocks and the blocks themselves are computed once per graph and material; a
@@ -15,6 +15,7 @@
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/stress/material.h"
 #include "algorithms/stress/rigid_body_spring/bond_spring.h"
+#include "algorithms/stress/rigid_body_spring/stiffness_pattern.h"
 
 #include <Eigen/SparseCore>
 
@@ -38,10 +39,6 @@ class GraphStiffness {
   [[nodiscard]] int diagonal_index(int i) const { return diagonal_[static_cast<std::size_t>(i)]; }
   /// The spring of bond `b`.
   [[nodiscard]] const BondSpring& spring(int b) const { return springs_[static_cast<std::size_t>(b)]; }
-  /// False when no bond's block has a nonzero at value index `at`: the entry is zero whatever the bonds
-  /// included (off the diagonal; the identity rows only set diagonal entries).
-  [[nodiscard]] bool may_be_nonzero(int at) const { return structural_[static_cast<std::size_t>(at)] != 0; }
-
   /// K = the springs of the bonds with `include_bond[b] != 0` (#bonds) plus the identity on the unknowns
   /// of the nodes with `identity_node[v] != 0` (#nodes; such nodes must have no included bond). Returns
   /// the number of nodes whose columns were rebuilt (all free nodes on the first call).
@@ -53,19 +50,13 @@ class GraphStiffness {
   [[nodiscard]] const Eigen::SparseMatrix<double>& matrix() const { return matrix_; }
 
  private:
-  /// Where one bond's 6 x 6 block (row node y, column node x) goes: column k of the block starts at
-  /// value index `start + k * stride`; start < 0 when either node is anchored.
-  struct Slot {
-    int start = -1;
-    int stride = 0;
-  };
   std::vector<int> first_;                    // #nodes
   std::vector<int> diagonal_;                 // #unknowns
   std::vector<BondSpring> springs_;           // #bonds
   std::vector<std::array<Matrix6, 4>> blocks_;// #bonds: (y, x) = (a, a), (b, a), (a, b), (b, b)
-  std::vector<std::array<Slot, 4>> slots_;    // #bonds, same order
+  std::vector<NodePairEntries> pairs_;        // stiffness_pattern.h
+  std::vector<std::array<int, 4>> bond_pairs_;// #bonds: the pair of each block, -1 at an anchored end
   std::vector<std::array<int, 2>> bond_ends_; // #bonds: a, b
-  std::vector<std::uint8_t> structural_;      // #values: some bond's block is nonzero there
   std::vector<std::vector<int>> node_bonds_;  // #nodes: bonds at the node, ascending
   Eigen::SparseMatrix<double> matrix_;
   // The flags of the last assembly (empty before the first) and the nodes to rebuild.

@@ -1,5 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 
+#include "algorithms/stress/rigid_body_spring/stiffness_pattern.h"
+
 #include <Eigen/Geometry>
 #include <Eigen/SparseCore>
 
@@ -51,57 +53,24 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
   SolverReport report;
   report.unknowns = n;
 
-  // Column pattern: node i's columns hold the 6 rows of i and of every free neighbour, sorted.
-  std::vector<std::vector<int>> neighbours(static_cast<std::size_t>(nf));
-  for (int i = 0; i < nf; ++i) neighbours[static_cast<std::size_t>(i)].push_back(i);
-  for (const int bi : bonds) {
-    const Bond& e = graph.bonds[static_cast<std::size_t>(bi)];
-    const int la = local[static_cast<std::size_t>(e.a)], lb = local[static_cast<std::size_t>(e.b)];
-    if (la >= 0 && lb >= 0) {
-      neighbours[static_cast<std::size_t>(la)].push_back(lb);
-      neighbours[static_cast<std::size_t>(lb)].push_back(la);
-    }
-  }
-  std::vector<int> outer(static_cast<std::size_t>(n) + 1, 0);
-  for (int i = 0; i < nf; ++i) {
-    auto& list = neighbours[static_cast<std::size_t>(i)];
-    std::sort(list.begin(), list.end());
-    list.erase(std::unique(list.begin(), list.end()), list.end());
-    for (int k = 0; k < 6; ++k) outer[static_cast<std::size_t>(6 * i + k + 1)] = 6 * static_cast<int>(list.size());
-  }
-  for (int c = 0; c < n; ++c) outer[static_cast<std::size_t>(c + 1)] += outer[static_cast<std::size_t>(c)];
-  SparseMatrix stiffness(n, n);
-  stiffness.resizeNonZeros(outer.back());
-  std::copy(outer.begin(), outer.end(), stiffness.outerIndexPtr());
-  int* inner = stiffness.innerIndexPtr();
-  double* value = stiffness.valuePtr();
-  std::fill(value, value + outer.back(), 0.0);
-  for (int i = 0; i < nf; ++i)
-    for (int k = 0; k < 6; ++k) {
-      int at = outer[static_cast<std::size_t>(6 * i + k)];
-      for (const int j : neighbours[static_cast<std::size_t>(i)])
-        for (int r = 0; r < 6; ++r) inner[at++] = 6 * j + r;
-    }
-  // Adds a 6 x 6 block at (row node j, column node i).
-  auto add_block = [&](int j, int i, const Matrix6& block) {
-    const auto& list = neighbours[static_cast<std::size_t>(i)];
-    const int slot = static_cast<int>(std::lower_bound(list.begin(), list.end(), j) - list.begin());
-    for (int k = 0; k < 6; ++k) {
-      double* column = value + outer[static_cast<std::size_t>(6 * i + k)] + 6 * slot;
-      for (int r = 0; r < 6; ++r) column[r] += block(r, k);
-    }
-  };
-
+  // K in the pattern of the component's bonds (stiffness_pattern.h), summed in bond order.
   std::vector<BondSpring> springs(bonds.size());
+  std::vector<std::array<Matrix6, 4>> blocks(bonds.size());
+  std::vector<std::array<int, 2>> ends(bonds.size());
+  std::vector<std::array<std::uint64_t, 4>> masks(bonds.size());
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
     springs[q] = bond_spring(graph, bonds[q], material);
-    const std::array<Matrix6, 4> blocks = bond_blocks(springs[q]);
-    const int ends[2] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
-    for (int x = 0; x < 2; ++x)
-      for (int y = 0; y < 2; ++y)
-        if (ends[x] >= 0 && ends[y] >= 0) add_block(ends[y], ends[x], blocks[static_cast<std::size_t>(2 * x + y)]);
+    bond_blocks(springs[q], blocks[q]);
+    for (std::size_t block = 0; block < 4; ++block) masks[q][block] = nonzero_mask(blocks[q][block]);
+    ends[q] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
   }
+  StiffnessPattern pattern = build_stiffness_pattern(nf, ends, masks);
+  SparseMatrix stiffness = std::move(pattern.matrix);
+  for (std::size_t q = 0; q < bonds.size(); ++q)
+    for (std::size_t block = 0; block < 4; ++block)
+      if (const int p = pattern.bond_pairs[q][block]; p >= 0)
+        add_pair_block(stiffness.valuePtr(), blocks[q][block], pattern.pairs[static_cast<std::size_t>(p)]);
 
   Vector f(n), u(n);
   for (int i = 0; i < nf; ++i)

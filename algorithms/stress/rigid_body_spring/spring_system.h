@@ -10,8 +10,8 @@
 /// and the spring forces acting on b are -K_t delta and -K_r phi. Anchored bodies have no unknowns.
 /// Both spring forces act at p, so each body's equilibrium K u = f is exact statics: where the
 /// structure is statically determinate the bond forces are those of equilibrium, whatever E, G and L.
-/// The matrix is assembled straight into compressed columns (the pattern is the graph's), with 6 x 6
-/// blocks per node pair.
+/// The matrix is assembled straight into compressed columns (the pattern is the graph's, without the
+/// entries every bond leaves zero: stiffness_pattern.h).
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/stress/material.h"
