@@ -1,8 +1,9 @@
 // The two sparse Cholesky factorisations of a stiffness block side by side: node blocks
 // (node_block_cholesky.h) and CHOLMOD's supernodes (supernodal_cholesky.h), on the in-plane half of
 // walls of n x n blocks (the decoupled block the wall benchmarks factorise), for the analysis, the
-// numeric factorisation and one solve; and the residual after each refinement step of a solve. These
-// are the figures of docs/stress.md, section 3 ("Node blocks"). The main is in fracture_benchmarks.cpp.
+// numeric factorisation and one solve; the node blocks' refactorisation after a cascade's break; and
+// the residual after each refinement step of a solve. These are the figures of docs/stress.md,
+// section 3 ("Node blocks", "Partial refactorisation"). The main is in fracture_benchmarks.cpp.
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
 #include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
@@ -12,6 +13,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -76,13 +79,60 @@ void prepare(benchmark::State& state, const WallBlock& w, Factor& factor) {
   if (!factor.analyze(w.lower, w.groups) || !factor.factorize(w.lower)) state.SkipWithError("factorisation failed");
 }
 
+/// A factorisation of values that all changed: K and 2 K by turns (node blocks keep the rows whose
+/// values did not change, cholesky_refactorize).
 template <class Factor>
 void cholesky_factorize(benchmark::State& state) {
   const WallBlock& w = wall_block(static_cast<int>(state.range(0)));
   Factor factor;
   prepare(state, w, factor);
-  for (auto _ : state) benchmark::DoNotOptimize(factor.factorize(w.lower));
+  const Eigen::SparseMatrix<double> doubled = 2.0 * w.lower;
+  bool turn = false;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(factor.factorize(turn ? w.lower : doubled));
+    turn = !turn;
+  }
   add_counters(state, w, factor);
+}
+
+/// A cascade's refactorisation: by turns, the intact block and the block with the bonds of one block
+/// of the second row near the middle broken (that node an identity row), in the intact pattern. Node
+/// blocks recompute the changed rows and their elimination-tree ancestors only: counter `rows` of
+/// `nodes`.
+void cholesky_refactorize(benchmark::State& state) {
+  const int side = static_cast<int>(state.range(0));
+  const WallBlock& w = wall_block(side);
+  const SupportGraph g = test::block_wall(side, side);
+  int hole = 0;
+  double best = 1e300, x_mid = 0.0;
+  for (const SupportNode& n : g.nodes) x_mid = std::max(x_mid, n.centroid.x());
+  for (int v = 0; v < g.node_count(); ++v) {
+    const Vec3& c = g.nodes[static_cast<std::size_t>(v)].centroid;
+    const double d = std::abs(c.x() - x_mid / 2) + std::abs(c.z() - 0.75);
+    if (d < best) best = d, hole = v;
+  }
+  GraphStiffness stiffness(g, Material{});
+  std::vector<std::uint8_t> include(g.bonds.size(), 1), identity(g.nodes.size(), 0);
+  for (const int b : g.node_bonds[static_cast<std::size_t>(hole)]) include[static_cast<std::size_t>(b)] = 0;
+  identity[static_cast<std::size_t>(hole)] = 1;
+  stiffness.assemble(include, identity);
+  Eigen::SparseMatrix<double> broken = w.lower;  // same pattern, the broken K's values
+  for (int c = 0; c < broken.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(broken, c); it; ++it)
+      it.valueRef() = stiffness.matrix().coeff(w.unknowns[static_cast<std::size_t>(it.row())],
+                                               w.unknowns[static_cast<std::size_t>(it.col())]);
+  NodeBlockCholesky factor;
+  prepare(state, w, factor);
+  bool turn = false;
+  int rows = 0;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(factor.factorize(turn ? w.lower : broken));
+    rows = factor.rows_refactorised();
+    turn = !turn;
+  }
+  add_counters(state, w, factor);
+  state.counters["rows"] = rows;
+  state.counters["nodes"] = static_cast<double>(w.groups.back() + 1);
 }
 
 template <class Factor>
@@ -129,6 +179,7 @@ BENCHMARK_TEMPLATE(cholesky_analyze, NodeBlockCholesky)->Apply(wall_sides);
 BENCHMARK_TEMPLATE(cholesky_analyze, SupernodalCholesky)->Apply(wall_sides);
 BENCHMARK_TEMPLATE(cholesky_factorize, NodeBlockCholesky)->Apply(wall_sides);
 BENCHMARK_TEMPLATE(cholesky_factorize, SupernodalCholesky)->Apply(wall_sides);
+BENCHMARK(cholesky_refactorize)->Apply(wall_sides);
 BENCHMARK_TEMPLATE(cholesky_solve, NodeBlockCholesky)->Apply(wall_sides);
 BENCHMARK_TEMPLATE(cholesky_solve, SupernodalCholesky)->Apply(wall_sides);
 BENCHMARK(refinement_residuals)->Arg(8)->Arg(23)->Arg(50)->Arg(71)->Unit(benchmark::kMillisecond);
