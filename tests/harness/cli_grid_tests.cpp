@@ -30,12 +30,23 @@ TEST_CASE("cli: grid runs all 50 cells and writes the raw samples to JSON and CS
   const auto json = dir / "grid.json";
   const auto r = run_cli("grid --case building --repetitions 1 --frames 2 --no-cache --json " + json.string());
   INFO(r.err);
-  REQUIRE(r.exit_code == 0);
+  // The gate's verdict depends on this machine's speed (a sanitizer build, a busy machine), so it is
+  // checked against the recorded frames rather than assumed: exit 0 exactly when every cell is within
+  // the budget, 1 otherwise, and the results are written either way.
+  REQUIRE((r.exit_code == 0 || r.exit_code == 1));
   REQUIRE(r.out.find("| pre-fracture \\ runtime |") != std::string::npos);
   const auto j = nlohmann::json::parse(slurp(json));
   REQUIRE(j.at("cells").size() == 50);
   REQUIRE(j.at("context").at("fingerprint").get<std::string>().size() == 16);
   REQUIRE(j.at("budget_ms").get<double>() == Approx(33.3));
+  bool all_within = true;
+  for (const auto& cell : j.at("cells")) {
+    REQUIRE_FALSE(cell.contains("failed"));
+    const bool within = cell.at("worst_frame_ms").get<double>() <= j.at("budget_ms").get<double>();
+    CHECK(cell.at("within_budget").get<bool>() == within);
+    all_within = all_within && within && cell.at("within_latency_budget").get<bool>();
+  }
+  CHECK((r.exit_code == 0) == all_within);
   for (const auto& cell : j.at("cells")) {
     REQUIRE(cell.at("samples").size() == 1);
     REQUIRE(cell.at("samples")[0].at("frame_ms").size() == 2);

@@ -53,8 +53,8 @@ TEST_CASE("graph stiffness: assembling only the changed columns equals an assemb
 
 TEST_CASE("stiffness pattern: K stores exactly the entries some bond makes nonzero, and the diagonal", "[stress]") {
   // Against K summed densely from the same bond blocks: every stored value equals the dense entry,
-  // every nonzero of the dense K is stored, and every stored entry off the diagonal is nonzero in some
-  // bond's block. A planar wall stores about a third of its 6 x 6 node blocks (0.36 here); the box
+  // every nonzero of the dense K is stored, the pattern is symmetric, and every stored entry off the
+  // diagonal is nonzero in some bond's block there or at the mirrored place. A planar wall stores about a third of its 6 x 6 node blocks (0.36 here); the box
   // is checked for exactness only (its blocks are denser).
   const auto check = [](const SupportGraph& g, double max_fill) {
     GraphStiffness stiffness(g, Material{});
@@ -82,8 +82,9 @@ TEST_CASE("stiffness pattern: K stores exactly the entries some bond makes nonze
       for (Eigen::SparseMatrix<double>::InnerIterator it(k, c); it; ++it) {
         stored(it.row(), it.col()) = 1;
         CHECK(it.value() == dense(it.row(), it.col()));
-        if (it.row() != it.col()) CHECK(touched(it.row(), it.col()) > 0);
+        if (it.row() != it.col()) CHECK(touched(it.row(), it.col()) + touched(it.col(), it.row()) > 0);
       }
+    CHECK(stored == stored.transpose());  // a symmetric pattern: the lower triangle holds all of K
     for (Eigen::Index c = 0; c < n; ++c) {
       CHECK(stored(c, c) == 1);
       for (Eigen::Index r = 0; r < n; ++r)
@@ -105,4 +106,22 @@ TEST_CASE("stiffness pattern: K stores exactly the entries some bond makes nonze
     check(graph_of(sliced_box({2.0, 1.5, 2.0}, {0.0, 0.0, 1.0}, cuts), {box_region({-2, -2, -0.1}, {2, 2, 0.1})}, 2400.0),
           1.0);
   }
+}
+
+TEST_CASE("stiffness pattern: a zero on one side of a block pair only is stored on both", "[stress]") {
+  // Two free nodes, one bond: block (b, a) has a nonzero at row 1, column 0 that block (a, b) lacks at
+  // the mirrored place (row 0, column 1), as round-off can leave. The pattern holds both entries, and
+  // the lower triangle (which the factorisations read) the one the upper side has.
+  std::uint64_t diagonal = 0;
+  for (int k = 0; k < 6; ++k) diagonal |= std::uint64_t{1} << (7 * k);
+  const std::array<std::array<int, 2>, 1> ends{{{0, 1}}};
+  const std::array<std::array<std::uint64_t, 4>, 1> masks{{{diagonal, std::uint64_t{1} << 1, 0, diagonal}}};
+  const StiffnessPattern p = build_stiffness_pattern(2, ends, masks);
+  Eigen::MatrixXi stored = Eigen::MatrixXi::Zero(12, 12);
+  for (int c = 0; c < p.matrix.outerSize(); ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(p.matrix, c); it; ++it) stored(it.row(), it.col()) = 1;
+  CHECK(stored(6 + 1, 0) == 1);  // block (b, a): row 1 of node b, column 0 of node a
+  CHECK(stored(0, 6 + 1) == 1);  // its mirror, which no block makes nonzero
+  CHECK(stored == stored.transpose());
+  CHECK(p.matrix.nonZeros() == 12 + 2);
 }

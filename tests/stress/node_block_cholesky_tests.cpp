@@ -1,7 +1,7 @@
 // The node-block sparse Cholesky (node_block_cholesky.h) against dense Cholesky solves of random
 // symmetric positive definite block-sparse matrices, its flop count on a pattern whose factor is known,
 // its refusals: not positive definite, nodes of mixed sizes; its refactorisation of the changed rows
-// only, against the rows where dense factors differ; and the choice between node blocks and CHOLMOD
+// only, against the rows found on dense factors; and the choice between node blocks and CHOLMOD
 // (sparse_cholesky.h).
 
 #include "algorithms/core/random.h"
@@ -232,27 +232,46 @@ TEST_CASE("sparse Cholesky: node blocks for small factorisations, CHOLMOD for la
 
 namespace {
 
-/// Rows (in elimination order, node by node) where the dense Cholesky factors of P a P^T and of
-/// P b P^T differ in any entry, P ordering the nodes as `order` does.
-int dense_rows_that_differ(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, std::span<const int> order, int g) {
-  const Eigen::Index n = a.rows();
+/// For K changed from `a` to `b`, with the nodes in elimination order `order`: the node rows of L that
+/// must be recomputed (the rows where P K P^T changed in the lower triangle, and their ancestors in
+/// the elimination tree of the dense factor of P a P^T: parent of j = the first node row below j
+/// with a nonzero in column j), and the node rows where the dense factors of P a P^T and P b P^T
+/// actually differ (a subset: a change can round away before it reaches a far ancestor).
+struct RowsToRecompute {
+  int needed = 0, differ = 0;
+};
+
+RowsToRecompute rows_to_recompute(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b, std::span<const int> order, int g) {
+  const Eigen::Index n = a.rows(), nodes = n / g;
   Eigen::PermutationMatrix<Eigen::Dynamic> p(n);  // unknown of node order[k] -> position k
   for (std::size_t k = 0; k < order.size(); ++k)
     for (int t = 0; t < g; ++t) p.indices()[order[k] * g + t] = static_cast<int>(k) * g + t;
-  const Eigen::MatrixXd la = Eigen::MatrixXd((p * a * p.transpose()).llt().matrixL());
-  const Eigen::MatrixXd lb = Eigen::MatrixXd((p * b * p.transpose()).llt().matrixL());
-  int rows = 0;
-  for (Eigen::Index k = 0; k < n / g; ++k)
-    if ((la.middleRows(k * g, g).array() != lb.middleRows(k * g, g).array()).any()) ++rows;
-  return rows;
+  const Eigen::MatrixXd pa = p * a * p.transpose(), pb = p * b * p.transpose();
+  const Eigen::MatrixXd la = Eigen::MatrixXd(pa.llt().matrixL()), lb = Eigen::MatrixXd(pb.llt().matrixL());
+  std::vector<int> parent(static_cast<std::size_t>(nodes), -1);
+  for (Eigen::Index j = 0; j < nodes; ++j)
+    for (Eigen::Index k = j + 1; k < nodes && parent[static_cast<std::size_t>(j)] < 0; ++k)
+      if ((la.block(k * g, j * g, g, g).array() != 0.0).any()) parent[static_cast<std::size_t>(j)] = static_cast<int>(k);
+  std::vector<char> marked(static_cast<std::size_t>(nodes), 0);
+  for (Eigen::Index k = 0; k < nodes; ++k)
+    marked[static_cast<std::size_t>(k)] = (pa.block(k * g, 0, g, (k + 1) * g).array() != pb.block(k * g, 0, g, (k + 1) * g).array()).any();
+  RowsToRecompute out;
+  for (Eigen::Index k = 0; k < nodes; ++k) {
+    if (marked[static_cast<std::size_t>(k)] && parent[static_cast<std::size_t>(k)] >= 0) marked[static_cast<std::size_t>(parent[static_cast<std::size_t>(k)])] = 1;
+    out.needed += marked[static_cast<std::size_t>(k)];
+    out.differ += (la.middleRows(k * g, g).array() != lb.middleRows(k * g, g).array()).any() ? 1 : 0;
+  }
+  return out;
 }
 
 }  // namespace
 
 TEST_CASE("node-block Cholesky: refactorising recomputes exactly the rows that change, as from scratch", "[stress]") {
-  // One node's diagonal block is stiffened (K + 0.5 I on its unknowns, still positive definite). The
-  // rows that must change are those where the dense factors of the two matrices differ; the refactor
-  // recomputes those and no others, and its factor solves bit for bit as a fresh factorisation.
+  // One node's diagonal block is stiffened (K + 0.5 I on its unknowns, still positive definite), or
+  // one entry between two nodes changed. The rows to recompute, found on dense matrices (the rows
+  // whose K changed and their ancestors in the tree of the dense factor), are those the refactor
+  // recomputes, and they hold every row where the dense factors differ; the refactored factor solves
+  // bit for bit as a fresh factorisation.
   SplitMix64 random(11);
   for (const int g : {1, 3, 6}) {
     const int nodes = 80;
@@ -280,9 +299,11 @@ TEST_CASE("node-block Cholesky: refactorising recomputes exactly the rows that c
           dense(v * g + t, v * g + t) += 0.5;
         }
         REQUIRE(cholesky.factorize(stiffer));
-        const int expected = dense_rows_that_differ(s.dense, dense, cholesky.node_order(), g);
-        CHECK(cholesky.rows_refactorised() == expected);
-        CHECK(expected < nodes);
+        const RowsToRecompute expected = rows_to_recompute(s.dense, dense, cholesky.node_order(), g);
+        CHECK(cholesky.rows_refactorised() == expected.needed);
+        CHECK(expected.differ <= expected.needed);
+        CHECK(expected.differ > 0);
+        CHECK(expected.needed < nodes);
         NodeBlockCholesky fresh;
         REQUIRE(fresh.analyze(stiffer, s.groups));
         REQUIRE(fresh.factorize(stiffer));
@@ -292,6 +313,29 @@ TEST_CASE("node-block Cholesky: refactorising recomputes exactly the rows that c
         REQUIRE(cholesky.factorize(s.lower));  // and back
         CHECK((cholesky.solve(b).array() == before.array()).all());
       }
+    }
+    SECTION("one entry between two nodes changed (K stays positive definite: its eigenvalues are >= 1)") {
+      Eigen::SparseMatrix<double> changed = s.lower;
+      Eigen::MatrixXd dense = s.dense;
+      bool done = false;
+      for (int c = 0; c < changed.outerSize() && !done; ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(changed, c); it && !done; ++it)
+          if (it.row() / g != it.col() / g && it.col() / g > nodes / 3) {
+            it.valueRef() += 0.1;
+            dense(it.row(), it.col()) += 0.1;
+            dense(it.col(), it.row()) += 0.1;
+            done = true;
+          }
+      REQUIRE(done);
+      REQUIRE(cholesky.factorize(changed));
+      const RowsToRecompute expected = rows_to_recompute(s.dense, dense, cholesky.node_order(), g);
+      CHECK(cholesky.rows_refactorised() == expected.needed);
+      CHECK(expected.differ <= expected.needed);
+      CHECK(expected.differ > 0);
+      NodeBlockCholesky fresh;
+      REQUIRE(fresh.analyze(changed, s.groups));
+      REQUIRE(fresh.factorize(changed));
+      CHECK((cholesky.solve(b).array() == fresh.solve(b).array()).all());
     }
     SECTION("after a failed factorisation the next one starts from scratch") {
       Eigen::SparseMatrix<double> indefinite = s.lower;

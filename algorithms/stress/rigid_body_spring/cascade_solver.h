@@ -71,9 +71,9 @@ class CascadeSolver final : public StressSolverState {
   };
 
   void build(const SupportGraph& graph);
-  /// True when every coupling is still below the decoupling tolerance. Only the couplings in the
-  /// columns or rows of the nodes the last assembly rebuilt can have changed (the others were checked
-  /// before, or are the intact K's, negligible by the split), unless a check failed since.
+  /// True when every coupling is still below the decoupling tolerance. The first check, and the one
+  /// after a failed check, goes over them all; the others only over the couplings in the columns or
+  /// rows of the nodes the last assembly rebuilt (the rest have not changed since they passed).
   [[nodiscard]] bool couplings_negligible();
   bool factorize(Block& block);
 
@@ -86,7 +86,7 @@ class CascadeSolver final : public StressSolverState {
   std::vector<Block> blocks_;
   std::vector<Coupling> couplings_;
   std::vector<int> node_coupling_start_, node_couplings_;  // per free node: couplings in its columns or rows
-  bool couplings_known_negligible_ = true;                 // every coupling passed the last check
+  bool couplings_known_negligible_ = false;                // every coupling passed the last check
   std::mutex mutex_;
 };
 

@@ -42,8 +42,9 @@ void GraphStiffness::add_block(std::size_t b, std::size_t q) {
 
 int GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
   const std::size_t nodes = first_.size();
-  if (last_include_.empty()) {
+  if (!assembled_) {
     assemble_all(include_bond, identity_node);
+    assembled_ = true;
   } else {
     // The nodes at either end of a bond whose inclusion changed, and those whose identity changed.
     const auto mark = [&](int v) {

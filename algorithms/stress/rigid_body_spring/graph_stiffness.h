@@ -59,7 +59,8 @@ class GraphStiffness {
   std::vector<std::array<int, 2>> bond_ends_; // #bonds: a, b
   std::vector<std::vector<int>> node_bonds_;  // #nodes: bonds at the node, ascending
   Eigen::SparseMatrix<double> matrix_;
-  // The flags of the last assembly (empty before the first) and the nodes to rebuild.
+  // The flags of the last assembly and the nodes to rebuild.
+  bool assembled_ = false;
   std::vector<std::uint8_t> last_include_, last_identity_, changed_;
   std::vector<int> changed_nodes_;
 

@@ -34,6 +34,7 @@ bool NodeBlockCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::s
   if (!order) return false;
   size_ = g;
   nodes_ = node_count;
+  value_count_ = static_cast<std::size_t>(lower.nonZeros());
   order_ = std::move(*order);
   position_.resize(static_cast<std::size_t>(nodes_));
   for (int k = 0; k < nodes_; ++k) position_[static_cast<std::size_t>(order_[static_cast<std::size_t>(k)])] = k;
@@ -186,8 +187,11 @@ std::size_t NodeBlockCholesky::factor_bytes() const {
   const std::size_t blocks = column_start_.empty() ? 0 : static_cast<std::size_t>(column_start_.back());
   const std::size_t nodes = static_cast<std::size_t>(nodes_);
   const std::size_t gathered = row_start_.empty() ? 0 : static_cast<std::size_t>(row_start_.back()) * gg;
-  return (blocks * gg + 2 * nodes * gg) * sizeof(double) +
-         (blocks + gathered + row_column_.size() + 8 * nodes) * sizeof(int);
+  // Doubles: L's blocks, the diagonal inverses and the workspace, the last factorised values. Ints:
+  // L's rows, the gather map, K's block columns and eight per node (order, position, tree, starts,
+  // workspace); a byte per node marks the rows to recompute.
+  return (blocks * gg + 2 * nodes * gg + value_count_) * sizeof(double) +
+         (blocks + gathered + row_column_.size() + 8 * nodes) * sizeof(int) + nodes;
 }
 
 namespace {
@@ -271,7 +275,7 @@ bool NodeBlockCholesky::factorize_blocks(const double* values, bool all_rows) {
 bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   const bool after_success = factorised_;
   factorised_ = false;
-  if (nodes_ == 0) return false;
+  if (nodes_ == 0 || !analysed()) return false;
   assert(lower.cols() == static_cast<Eigen::Index>(nodes_) * size_);
   if (work_.empty()) {  // the factor's storage, on the first factorisation (an analysis may go unused)
     build_gather(lower);
@@ -335,7 +339,7 @@ void NodeBlockCholesky::solve_blocks(double* x) const {
 }
 
 Eigen::VectorXd NodeBlockCholesky::solve(const Eigen::VectorXd& b) const {
-  if (!factorised_) return Eigen::VectorXd::Constant(b.size(), std::numeric_limits<double>::quiet_NaN());
+  if (!factorised_ || !analysed()) return Eigen::VectorXd::Constant(b.size(), std::numeric_limits<double>::quiet_NaN());
   const int g = size_;
   assert(b.size() == static_cast<Eigen::Index>(nodes_) * g);
   Eigen::VectorXd x(b.size());  // in elimination order

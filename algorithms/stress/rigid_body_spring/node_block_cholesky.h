@@ -19,7 +19,8 @@
 /// factorisation from scratch would compute, bit for bit, and so is the whole factor. That is what a
 /// cascade of breaking bonds needs: each round changes the blocks of a few nodes (docs/stress.md,
 /// section 3).
-/// One object owns its pattern and factor; it is movable and copyable.
+/// One object owns its pattern and factor; it is movable and copyable (a moved-from object refuses to
+/// factorise and solves to NaN until analysed again).
 
 #include <Eigen/SparseCore>
 
@@ -58,6 +59,10 @@ class NodeBlockCholesky {
   [[nodiscard]] std::span<const int> node_order() const { return order_; }
 
  private:
+  /// The analysis' arrays are all there (not so in a moved-from object).
+  [[nodiscard]] bool analysed() const {
+    return order_.size() == static_cast<std::size_t>(nodes_) && row_start_.size() == order_.size() + 1;
+  }
   void build_gather(const Eigen::SparseMatrix<double>& lower);
   void build_rows();
   /// Marks in stale_ the rows of L that read a value of `lower` different from last_values_, and their
@@ -72,6 +77,7 @@ class NodeBlockCholesky {
   int size_ = 0;       // g: unknowns per node
   int nodes_ = 0;      // N
   int rows_refactorised_ = 0;
+  std::size_t value_count_ = 0;  // entries of the analysed lower triangle
   double flops_ = 0.0;
   std::vector<int> order_;       // elimination position -> node (its unknowns are size_ * node + t)
   std::vector<int> position_;    // node -> elimination position

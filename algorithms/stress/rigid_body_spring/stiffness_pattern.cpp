@@ -10,6 +10,14 @@ namespace shatter {
 
 namespace {
 
+/// The mask of the transposed block: bit 6 k + r moves to 6 r + k.
+std::uint64_t transposed(std::uint64_t mask) {
+  std::uint64_t out = 0;
+  for (int k = 0; k < 6; ++k)
+    for (int r = 0; r < 6; ++r) out |= ((mask >> (6 * k + r)) & 1) << (6 * r + k);
+  return out;
+}
+
 /// Set bits among the 6 of column k of a mask.
 int column_count(std::uint64_t mask, int k) {
   static constexpr std::array<std::uint8_t, 64> kBits = [] {
@@ -99,6 +107,18 @@ StiffnessPattern build_stiffness_pattern(int free_nodes, std::span<const std::ar
     for (std::size_t q = 0; q < 4; ++q)
       if (p[q] >= 0) out.pairs[static_cast<std::size_t>(p[q])].mask |= masks[b][q];
   }
+  // K is symmetric, but a block and its mirror need not have their zeros in mirrored places (round-off
+  // can cancel on one side only): each pair stores the union with its mirror's transpose, so that the
+  // pattern is symmetric and a lower triangle holds every entry of K.
+  for (std::size_t i = 0; i < nf; ++i)
+    for (int p = unique_start[i]; p < unique_start[i + 1]; ++p) {
+      const int j = rows[static_cast<std::size_t>(p)];
+      if (j < static_cast<int>(i)) continue;  // each pair once, from its upper side; j == i: itself
+      const int mirror = pair(static_cast<int>(i), j);
+      const std::uint64_t both = out.pairs[static_cast<std::size_t>(p)].mask | transposed(out.pairs[static_cast<std::size_t>(mirror)].mask);
+      out.pairs[static_cast<std::size_t>(p)].mask = both;
+      out.pairs[static_cast<std::size_t>(mirror)].mask = transposed(both);
+    }
 
   // Column k of node i: for each of its pairs in row order, the rows r the pair's mask holds.
   const int n = 6 * free_nodes;

@@ -6,8 +6,8 @@
 /// blocks (bond_spring.h), but many of their entries are exact zeros: in a planar structure the
 /// in-plane unknowns (two translations, one rotation) never meet the out-of-plane ones, so about two
 /// thirds of the entries of dense 6 x 6 node blocks are zero in every wall. K stores, for each pair of
-/// coupled nodes, only the entries some bond's block makes nonzero there, plus every diagonal entry
-/// (an identity row needs it). Every pass over K (the split into decoupled blocks, the gathers of the
+/// coupled nodes, only the entries some bond's block makes nonzero there or at the mirrored place (the
+/// pattern stays symmetric), plus every diagonal entry (an identity row needs it). Every pass over K (the split into decoupled blocks, the gathers of the
 /// factorisations, the residuals) then does a third of the work. An entry may still be zero by
 /// cancellation; that is a value, not a structural zero.
 
