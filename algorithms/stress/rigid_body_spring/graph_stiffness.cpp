@@ -30,7 +30,7 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
     free_ends[b] = {la >= 0 ? la / 6 : -1, lb >= 0 ? lb / 6 : -1};
   }
   StiffnessPattern pattern = build_stiffness_pattern(nf, free_ends, masks);
-  matrix_ = std::move(pattern.matrix);
+  matrix_.swap(pattern.matrix);  // Eigen's SparseMatrix copies on a move
   diagonal_ = std::move(pattern.diagonal);
   pairs_ = std::move(pattern.pairs);
   bond_pairs_ = std::move(pattern.bond_pairs);

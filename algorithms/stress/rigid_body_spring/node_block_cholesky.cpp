@@ -162,7 +162,7 @@ void NodeBlockCholesky::mark_changed_rows(const Eigen::SparseMatrix<double>& low
   const int* outer = lower.outerIndexPtr();
   const int* inner = lower.innerIndexPtr();
   const double* values = lower.valuePtr();
-  const double* last = last_values_.data();
+  double* last = last_values_.data();
   std::fill(stale_.begin(), stale_.end(), std::uint8_t{0});
   for (int c = 0; c < static_cast<int>(lower.cols()); ++c)
     for (int at = outer[c]; at < outer[c + 1]; ++at)
@@ -173,6 +173,7 @@ void NodeBlockCholesky::mark_changed_rows(const Eigen::SparseMatrix<double>& low
         const int pc = position_[static_cast<std::size_t>(c / g)];
         const int pr = position_[static_cast<std::size_t>(inner[at] / g)];
         stale_[static_cast<std::size_t>(std::max(pc, pr))] = 1;
+        last[at] = values[at];  // the new values become the last ones (cleared if this one fails)
       }
   // Row k reads the rows j of its pattern (L(k, j) != 0), all of them its descendants, and the parent
   // of j reads j (it is the first row of column j): the rows to recompute are the changed ones and
@@ -307,10 +308,10 @@ bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   // A failure comes after the failing row's reach was used and zeroed, so the workspace is clean.
   assert(std::all_of(work_.begin(), work_.end(), [](double x) { return x == 0.0; }));
   factorised_ = ok;
-  if (ok)
-    last_values_.assign(lower.valuePtr(), lower.valuePtr() + entries);
-  else
+  if (!ok)
     last_values_.clear();
+  else if (all_rows)  // a partial one updated the changed values as it found them
+    last_values_.assign(lower.valuePtr(), lower.valuePtr() + entries);
   return ok;
 }
 

@@ -66,7 +66,7 @@ class NodeBlockCholesky {
   void build_gather(const Eigen::SparseMatrix<double>& lower);
   void build_rows();
   /// Marks in stale_ the rows of L that read a value of `lower` different from last_values_, and their
-  /// ancestors.
+  /// ancestors; last_values_ takes the new values.
   void mark_changed_rows(const Eigen::SparseMatrix<double>& lower);
   template <int G>
   bool factorize_blocks(const double* values, bool all_rows);

@@ -66,7 +66,8 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
     ends[q] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
   }
   StiffnessPattern pattern = build_stiffness_pattern(nf, ends, masks);
-  SparseMatrix stiffness = std::move(pattern.matrix);
+  SparseMatrix stiffness;
+  stiffness.swap(pattern.matrix);  // Eigen's SparseMatrix copies on a move
   for (std::size_t q = 0; q < bonds.size(); ++q)
     for (std::size_t block = 0; block < 4; ++block)
       if (const int p = pattern.bond_pairs[q][block]; p >= 0)

@@ -10,11 +10,18 @@ namespace shatter {
 
 namespace {
 
-/// The mask of the transposed block: bit 6 k + r moves to 6 r + k.
+/// The mask of the transposed block: bit 6 k + r moves to 6 r + k. Column k (6 bits) becomes row k:
+/// its bit r goes to 6 r + k, which a table spreads for all 64 columns at once.
 std::uint64_t transposed(std::uint64_t mask) {
+  static constexpr std::array<std::uint64_t, 64> kSpread = [] {
+    std::array<std::uint64_t, 64> spread{};
+    for (int v = 0; v < 64; ++v)
+      for (int r = 0; r < 6; ++r)
+        if ((v >> r) & 1) spread[static_cast<std::size_t>(v)] |= std::uint64_t{1} << (6 * r);
+    return spread;
+  }();
   std::uint64_t out = 0;
-  for (int k = 0; k < 6; ++k)
-    for (int r = 0; r < 6; ++r) out |= ((mask >> (6 * k + r)) & 1) << (6 * r + k);
+  for (int k = 0; k < 6; ++k) out |= kSpread[static_cast<std::size_t>((mask >> (6 * k)) & 0x3f)] << k;
   return out;
 }
 
@@ -109,16 +116,19 @@ StiffnessPattern build_stiffness_pattern(int free_nodes, std::span<const std::ar
   }
   // K is symmetric, but a block and its mirror need not have their zeros in mirrored places (round-off
   // can cancel on one side only): each pair stores the union with its mirror's transpose, so that the
-  // pattern is symmetric and a lower triangle holds every entry of K.
-  for (std::size_t i = 0; i < nf; ++i)
-    for (int p = unique_start[i]; p < unique_start[i + 1]; ++p) {
-      const int j = rows[static_cast<std::size_t>(p)];
-      if (j < static_cast<int>(i)) continue;  // each pair once, from its upper side; j == i: itself
-      const int mirror = pair(static_cast<int>(i), j);
-      const std::uint64_t both = out.pairs[static_cast<std::size_t>(p)].mask | transposed(out.pairs[static_cast<std::size_t>(mirror)].mask);
-      out.pairs[static_cast<std::size_t>(p)].mask = both;
-      out.pairs[static_cast<std::size_t>(mirror)].mask = transposed(both);
-    }
+  // pattern is symmetric and a lower triangle holds every entry of K. A bond's blocks (b, a) and
+  // (a, b) are mirrors, and a diagonal pair is its own.
+  constexpr std::uint64_t kFull = (std::uint64_t{1} << 36) - 1;
+  const auto symmetrise = [&](int p, int mirror) {
+    std::uint64_t& m = out.pairs[static_cast<std::size_t>(p)].mask;
+    std::uint64_t& n = out.pairs[static_cast<std::size_t>(mirror)].mask;
+    if (m == kFull && n == kFull) return;  // dense blocks, as in most 3D bodies
+    m |= transposed(n);
+    n = transposed(m);
+  };
+  for (const std::array<int, 4>& p : out.bond_pairs)
+    if (p[1] >= 0) symmetrise(p[1], p[2]);
+  for (std::size_t i = 0; i < nf; ++i) symmetrise(diagonal_pair[i], diagonal_pair[i]);
 
   // Column k of node i: for each of its pairs in row order, the rows r the pair's mask holds.
   const int n = 6 * free_nodes;
@@ -143,12 +153,16 @@ StiffnessPattern build_stiffness_pattern(int free_nodes, std::span<const std::ar
         NodePairEntries& entries = out.pairs[static_cast<std::size_t>(p)];
         const int j = rows[static_cast<std::size_t>(p)];
         entries.column_start[static_cast<std::size_t>(k)] = at;
-        const std::uint64_t column = entries.mask >> (6 * k);
-        for (int r = 0; r < 6; ++r) {
-          if (!((column >> r) & 1)) continue;
-          if (j == static_cast<int>(i) && r == k) out.diagonal[6 * i + static_cast<std::size_t>(k)] = at;
-          inner[at++] = 6 * j + r;
+        if (j == static_cast<int>(i))  // the diagonal entry: after the rows above it in this column
+          out.diagonal[6 * i + static_cast<std::size_t>(k)] = at + column_count(entries.mask & ((std::uint64_t{1} << (6 * k + k)) - 1), k);
+        const std::uint64_t column = (entries.mask >> (6 * k)) & 0x3f;
+        if (column == 0x3f) {  // all six rows (dense blocks)
+          for (int r = 0; r < 6; ++r) inner[at + r] = 6 * j + r;
+          at += 6;
+          continue;
         }
+        for (int r = 0; r < 6; ++r)
+          if ((column >> r) & 1) inner[at++] = 6 * j + r;
       }
     }
   return out;
