@@ -3,8 +3,10 @@
 // wall: an evaluation carries a point load that moves from block to block with every iteration (the
 // same structure under new loads), so from the second iteration on the solver reuses the split and
 // factors of the unchanged stiffness (linear_solve.h) and its analyses (analysis_pool.h); the "cold"
-// variants drop all of that before every iteration (a graph seen for the first time). The main is in
+// variants drop all of that before every iteration (a graph seen for the first time). The cold cascade
+// on small 3D boxes shows the other end: dense blocks, few rounds. The main is in
 // fracture_benchmarks.cpp.
+#include "algorithms/core/random.h"
 #include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
@@ -12,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <string>
@@ -110,6 +113,60 @@ void cascade_wall(benchmark::State& state, const char* model_name, Pool pool = P
   state.counters["rounds"] = rounds;
 }
 
+/// A 2.5 m cube anchored at its foot, cut into 5 x 5 x 5 blocks along the axes (arg 0: 300 bonds, blocks
+/// with zeros) or by 15 oblique planes (arg 1: 582 bonds, denser blocks); cascade_box_cold breaks the
+/// bonds of the fragment nearest (0, 0, 0.75) under a weak mortar. The small 3D graphs of a game's
+/// structures, where the stiffness has few structural zeros to drop.
+const SupportGraph& box(int oblique) {
+  static std::map<int, std::unique_ptr<SupportGraph>> cache;
+  auto& slot = cache[oblique];
+  if (!slot) {
+    std::vector<Plane> cuts;
+    if (oblique) {
+      SplitMix64 random(5);
+      for (int i = 0; i < 15; ++i) {
+        Plane p;
+        p.point = Vec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(0, 2.5));
+        p.normal = Vec3(random.uniform(-0.5, 0.5), random.uniform(-0.5, 0.5), random.uniform(-0.5, 0.5)).normalized();
+        cuts.push_back(p);
+      }
+    } else {
+      cuts = test::planes_at(0, test::even_cuts(-1.25, 1.25, 5));
+      for (const Plane& p : test::planes_at(1, test::even_cuts(-1.25, 1.25, 5))) cuts.push_back(p);
+      for (const Plane& p : test::planes_at(2, test::even_cuts(0.0, 2.5, 5))) cuts.push_back(p);
+    }
+    slot = std::make_unique<SupportGraph>(test::graph_of(test::sliced_box({2.5, 2.5, 2.5}, {0.0, 0.0, 1.25}, cuts),
+                                                         {test::box_region({-2, -2, -0.1}, {2, 2, 0.1})}, 2400.0));
+  }
+  return *slot;
+}
+
+void cascade_box_cold(benchmark::State& state, const char* model_name) {
+  const SupportGraph& g = box(static_cast<int>(state.range(0)));
+  const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
+  int hole = 0;
+  double best = 1e300;
+  for (int v = 0; v < g.node_count(); ++v) {
+    const Vec3& c = g.nodes[static_cast<std::size_t>(v)].centroid;
+    const double d = std::abs(c.x()) + std::abs(c.y()) + std::abs(c.z() - 0.75);
+    if (d < best) best = d, hole = v;
+  }
+  const std::vector<int>& broken = g.node_bonds[static_cast<std::size_t>(hole)];
+  Material weak;
+  weak.tensile_strength = 3e3;
+  SolverReport report;
+  int rounds = 0;
+  for (auto _ : state) {
+    forget_if_cold(state, Pool::cold);
+    Result<PropagationResult> r = propagate(*model, g, Loads{}, weak, broken);
+    benchmark::DoNotOptimize(r);
+    report = r->report;
+    rounds = r->rounds;
+  }
+  add_counters(state, g, report);
+  state.counters["rounds"] = rounds;
+}
+
 void evaluate_wall_cold(benchmark::State& state, const char* model_name) { evaluate_wall(state, model_name, Pool::cold); }
 void cascade_wall_cold(benchmark::State& state, const char* model_name) { cascade_wall(state, model_name, Pool::cold); }
 
@@ -125,3 +182,4 @@ BENCHMARK_CAPTURE(evaluate_wall_cold, tresca, "tresca")->Arg(100)->Arg(1000)->Ar
 BENCHMARK_CAPTURE(evaluate_wall_cold, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cascade_wall_cold, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cascade_wall_cold, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(cascade_box_cold, von_mises, "von-mises")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
