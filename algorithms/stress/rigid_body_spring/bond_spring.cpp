@@ -36,7 +36,7 @@ BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& m) {
   return s;
 }
 
-void bond_blocks(const BondSpring& s, std::array<Matrix6, 4>& out) {
+void bond_blocks(const BondSpring& s, std::span<Matrix6, 4> out) {
   // With map = sign [I, -R; 0, I] (R = [lever]x, R^T = -R) and the spring diag(T, Q):
   // map_y^T diag(T, Q) map_x = sign_x sign_y [T, -T R_x; R_y T, Q - R_y T R_x].
   const Eigen::Matrix3d& t = s.translation;

@@ -10,6 +10,7 @@
 #include <Eigen/Core>
 
 #include <array>
+#include <span>
 
 namespace shatter {
 
@@ -44,7 +45,7 @@ BondSpring bond_spring(const SupportGraph& graph, int bond, const Material& mate
 /// map_a = -[I, -[lever_a]x; 0, I] and map_b = +[I, -[lever_b]x; 0, I] take a node's unknowns to the
 /// relative motion. Computed from 3 x 3 blocks, never as 6 x 6 products, so that both assemblies
 /// (spring_system.cpp, graph_stiffness.cpp) use the very same numbers. Written into `out`.
-void bond_blocks(const BondSpring& spring, std::array<Matrix6, 4>& out);
+void bond_blocks(const BondSpring& spring, std::span<Matrix6, 4> out);
 
 /// The bond's internal forces from its end nodes' unknowns `u_a`, `u_b` (6 each: m, rad).
 BondForces bond_forces(const Bond& bond, const BondSpring& spring, const double* u_a, const double* u_b);

@@ -12,7 +12,7 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
     if (!graph.nodes[v].anchored) first_[v] = 6 * nf++;
 
   springs_.resize(graph.bonds.size());
-  blocks_.resize(graph.bonds.size());
+  blocks_.resize(4 * graph.bonds.size());
   bond_ends_.resize(graph.bonds.size());
   node_bonds_.resize(graph.nodes.size());
   std::vector<std::array<int, 2>> free_ends(graph.bonds.size());
@@ -21,8 +21,9 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
     const Bond& e = graph.bonds[b];
     assert(e.a != e.b);
     springs_[b] = bond_spring(graph, static_cast<int>(b), material);
-    bond_blocks(springs_[b], blocks_[b]);
-    for (std::size_t q = 0; q < 4; ++q) masks[b][q] = nonzero_mask(blocks_[b][q]);
+    const std::span<Matrix6, 4> blocks(blocks_.data() + 4 * b, 4);
+    bond_blocks(springs_[b], blocks);
+    for (std::size_t q = 0; q < 4; ++q) masks[b][q] = nonzero_mask(blocks[q]);
     bond_ends_[b] = {e.a, e.b};
     node_bonds_[static_cast<std::size_t>(e.a)].push_back(static_cast<int>(b));  // ascending: b ascends
     node_bonds_[static_cast<std::size_t>(e.b)].push_back(static_cast<int>(b));
@@ -37,7 +38,7 @@ GraphStiffness::GraphStiffness(const SupportGraph& graph, const Material& materi
 }
 
 void GraphStiffness::add_block(std::size_t b, std::size_t q) {
-  if (const int p = bond_pairs_[b][q]; p >= 0) add_pair_block(matrix_.valuePtr(), blocks_[b][q], pairs_[static_cast<std::size_t>(p)]);
+  if (const int p = bond_pairs_[b][q]; p >= 0) add_pair_block(matrix_.valuePtr(), blocks_[4 * b + q], pairs_[static_cast<std::size_t>(p)]);
 }
 
 int GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
@@ -54,7 +55,7 @@ int GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::sp
       }
     };
     changed_nodes_.clear();
-    for (std::size_t b = 0; b < blocks_.size(); ++b)
+    for (std::size_t b = 0; b < springs_.size(); ++b)
       if ((include_bond[b] != 0) != (last_include_[b] != 0)) {
         mark(bond_ends_[b][0]);
         mark(bond_ends_[b][1]);
@@ -74,7 +75,7 @@ int GraphStiffness::assemble(std::span<const std::uint8_t> include_bond, std::sp
 void GraphStiffness::assemble_all(std::span<const std::uint8_t> include_bond, std::span<const std::uint8_t> identity_node) {
   double* value = matrix_.valuePtr();
   std::fill(value, value + matrix_.nonZeros(), 0.0);
-  for (std::size_t b = 0; b < blocks_.size(); ++b) {
+  for (std::size_t b = 0; b < springs_.size(); ++b) {
     if (!include_bond[b]) continue;
     for (std::size_t q = 0; q < 4; ++q) add_block(b, q);
   }

@@ -53,7 +53,9 @@ class GraphStiffness {
   std::vector<int> first_;                    // #nodes
   std::vector<int> diagonal_;                 // #unknowns
   std::vector<BondSpring> springs_;           // #bonds
-  std::vector<std::array<Matrix6, 4>> blocks_;// #bonds: (y, x) = (a, a), (b, a), (a, b), (b, b)
+  // 4 #bonds: bond b's blocks from 4 b on, (y, x) = (a, a), (b, a), (a, b), (b, b). Matrix6 elements,
+  // not arrays of four, so that sizing the vector does not zero them.
+  std::vector<Matrix6> blocks_;
   std::vector<NodePairEntries> pairs_;        // stiffness_pattern.h
   std::vector<std::array<int, 4>> bond_pairs_;// #bonds: the pair of each block, -1 at an anchored end
   std::vector<std::array<int, 2>> bond_ends_; // #bonds: a, b

@@ -55,14 +55,15 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
 
   // K in the pattern of the component's bonds (stiffness_pattern.h), summed in bond order.
   std::vector<BondSpring> springs(bonds.size());
-  std::vector<std::array<Matrix6, 4>> blocks(bonds.size());
+  std::vector<Matrix6> blocks(4 * bonds.size());  // bond q from 4 q on; Matrix6 elements are not zeroed
   std::vector<std::array<int, 2>> ends(bonds.size());
   std::vector<std::array<std::uint64_t, 4>> masks(bonds.size());
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
     springs[q] = bond_spring(graph, bonds[q], material);
-    bond_blocks(springs[q], blocks[q]);
-    for (std::size_t block = 0; block < 4; ++block) masks[q][block] = nonzero_mask(blocks[q][block]);
+    const std::span<Matrix6, 4> four(blocks.data() + 4 * q, 4);
+    bond_blocks(springs[q], four);
+    for (std::size_t block = 0; block < 4; ++block) masks[q][block] = nonzero_mask(four[block]);
     ends[q] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
   }
   StiffnessPattern pattern = build_stiffness_pattern(nf, ends, masks);
@@ -71,7 +72,7 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
   for (std::size_t q = 0; q < bonds.size(); ++q)
     for (std::size_t block = 0; block < 4; ++block)
       if (const int p = pattern.bond_pairs[q][block]; p >= 0)
-        add_pair_block(stiffness.valuePtr(), blocks[q][block], pattern.pairs[static_cast<std::size_t>(p)]);
+        add_pair_block(stiffness.valuePtr(), blocks[4 * q + block], pattern.pairs[static_cast<std::size_t>(p)]);
 
   Vector f(n), u(n);
   for (int i = 0; i < nf; ++i)

@@ -51,7 +51,11 @@ StiffnessPattern build_stiffness_pattern(int free_nodes, std::span<const std::ar
 inline void add_pair_block(double* value, const Matrix6& block, const NodePairEntries& pair) {
   for (int k = 0; k < 6; ++k) {
     double* column = value + pair.column_start[static_cast<std::size_t>(k)];
-    const std::uint64_t rows = pair.mask >> (6 * k);
+    const std::uint64_t rows = (pair.mask >> (6 * k)) & 0x3f;
+    if (rows == 0x3f) {  // all six rows stored (dense blocks)
+      for (int r = 0; r < 6; ++r) column[r] += block(r, k);
+      continue;
+    }
     for (int r = 0; r < 6; ++r)
       if ((rows >> r) & 1) *column++ += block(r, k);
   }
