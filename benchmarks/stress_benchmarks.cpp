@@ -17,6 +17,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 
 namespace {
@@ -94,12 +95,12 @@ void evaluate_wall(benchmark::State& state, const char* model_name, Pool pool = 
   add_counters(state, g, report);
 }
 
-void cascade_wall(benchmark::State& state, const char* model_name, Pool pool = Pool::warm) {
-  const SupportGraph& g = wall(static_cast<int>(state.range(0)));
+/// The cascade of `g` after `broken`, with mortar of `tensile_strength` (Pa), timed per iteration.
+void run_cascade(benchmark::State& state, const char* model_name, const SupportGraph& g, std::span<const int> broken,
+                 double tensile_strength, Pool pool) {
   const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
-  const std::vector<int> broken = hole(g);
   Material weak;  // a weak mortar, so that the hole makes something else fail
-  weak.tensile_strength = 2e4;
+  weak.tensile_strength = tensile_strength;
   SolverReport report;
   int rounds = 0;
   for (auto _ : state) {
@@ -111,6 +112,11 @@ void cascade_wall(benchmark::State& state, const char* model_name, Pool pool = P
   }
   add_counters(state, g, report);
   state.counters["rounds"] = rounds;
+}
+
+void cascade_wall(benchmark::State& state, const char* model_name, Pool pool = Pool::warm) {
+  const SupportGraph& g = wall(static_cast<int>(state.range(0)));
+  run_cascade(state, model_name, g, hole(g), 2e4, pool);
 }
 
 /// A 2.5 m cube anchored at its foot, cut into 5 x 5 x 5 blocks along the axes (arg 0: 300 bonds, blocks
@@ -143,7 +149,6 @@ const SupportGraph& box(int oblique) {
 
 void cascade_box_cold(benchmark::State& state, const char* model_name) {
   const SupportGraph& g = box(static_cast<int>(state.range(0)));
-  const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
   int hole = 0;
   double best = 1e300;
   for (int v = 0; v < g.node_count(); ++v) {
@@ -151,20 +156,7 @@ void cascade_box_cold(benchmark::State& state, const char* model_name) {
     const double d = std::abs(c.x()) + std::abs(c.y()) + std::abs(c.z() - 0.75);
     if (d < best) best = d, hole = v;
   }
-  const std::vector<int>& broken = g.node_bonds[static_cast<std::size_t>(hole)];
-  Material weak;
-  weak.tensile_strength = 3e3;
-  SolverReport report;
-  int rounds = 0;
-  for (auto _ : state) {
-    forget_if_cold(state, Pool::cold);
-    Result<PropagationResult> r = propagate(*model, g, Loads{}, weak, broken);
-    benchmark::DoNotOptimize(r);
-    report = r->report;
-    rounds = r->rounds;
-  }
-  add_counters(state, g, report);
-  state.counters["rounds"] = rounds;
+  run_cascade(state, model_name, g, g.node_bonds[static_cast<std::size_t>(hole)], 3e3, Pool::cold);
 }
 
 void evaluate_wall_cold(benchmark::State& state, const char* model_name) { evaluate_wall(state, model_name, Pool::cold); }
