@@ -3,12 +3,17 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <spawn.h>
 #include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <vector>
+
+extern char** environ;
 
 namespace shatter::test {
 
@@ -36,6 +41,41 @@ inline CliRun run_cli(const std::string& args) {
   const std::string cmd = std::string(SHATTER_CLI) + " " + args + " >" + out.string() + " 2>" + err.string();
   const int status = std::system(cmd.c_str());
   CliRun run;
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = slurp(out);
+  run.err = slurp(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return run;
+}
+
+/// Runs `shatterbench` with `args` as its argument vector (no shell: any byte but NUL passes through
+/// as written), with `cwd` as the working folder when not empty.
+inline CliRun run_cli_argv(const std::vector<std::string>& args, const std::filesystem::path& cwd = {}) {
+  static int counter = 0;
+  const auto dir = std::filesystem::temp_directory_path() / "shatter_cli_tests";
+  std::filesystem::create_directories(dir);
+  const std::string tag = std::to_string(::getpid()) + "_argv" + std::to_string(counter++);
+  const auto out = dir / ("out" + tag);
+  const auto err = dir / ("err" + tag);
+  std::vector<std::string> words = {SHATTER_CLI};
+  words.insert(words.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  CliRun run;
+  if (spawned != 0) return run;
+  int status = 0;
+  ::waitpid(pid, &status, 0);
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   run.out = slurp(out);
   run.err = slurp(err);
