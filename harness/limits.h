@@ -9,6 +9,7 @@
 /// benchmark machine. A limit turns a typo or a generated file gone wrong into a message instead of
 /// an allocation that runs the machine out of memory an hour into a run.
 
+#include <cstddef>
 #include <cstdint>
 
 namespace shatter {
@@ -40,6 +41,10 @@ inline constexpr int kMaxPrimitiveSegments = 4096;
 /// Size of a case file: the loader holds the text and its JSON tree (about ten times the text); the
 /// built-in cases are 1 to 2 KB. It also bounds the lists without a limit of their own (anchors).
 inline constexpr std::uint64_t kMaxCaseFileBytes = 16ULL << 20;
+
+/// Bytes of a case name: the name is a file name (results/baselines/<name>.json), and file systems
+/// allow 255 bytes for one, less the `.json` and the `.NAME.partial-XXXXXXXX` of an atomic write.
+inline constexpr std::size_t kMaxCaseNameBytes = 200;
 
 /// Corners of a prism's profile, outline and holes together: a wall's elevation has tens; each corner
 /// makes about four triangles (front, back and the side quad), 400,000 at the limit.

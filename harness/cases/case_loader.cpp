@@ -268,6 +268,22 @@ std::string_view schedule_mode_name(ScheduleMode mode) {
   return "immediate";
 }
 
+Status check_case_name(const std::string& name) {
+  // The name becomes a file name (the baseline results/baselines/<name>.json, report images): it must
+  // stay one, in the folder it is written to.
+  if (name.empty()) return Error{"must not be empty"};
+  if (name.size() > kMaxCaseNameBytes)
+    return Error{fmt::format("{} bytes exceed the limit of {} bytes per case name", name.size(), kMaxCaseNameBytes)};
+  if (name.front() == '.') return Error{"must not start with '.' (the name is a file name)"};
+  if (name.find("..") != std::string::npos) return Error{"must not contain \"..\" (the name is a file name)"};
+  for (const char ch : name) {
+    const auto u = static_cast<unsigned char>(ch);
+    if (ch == '/' || ch == '\\') return Error{"must not contain '/' or '\\' (the name is a file name)"};
+    if (u < 0x20 || u == 0x7f) return Error{"must not contain control characters (the name is a file name)"};
+  }
+  return {};
+}
+
 std::optional<ScheduleMode> schedule_mode_from_name(std::string_view name) {
   for (const ScheduleMode m : {ScheduleMode::immediate, ScheduleMode::prefetch, ScheduleMode::amortized})
     if (schedule_mode_name(m) == name) return m;
@@ -290,6 +306,7 @@ Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   c.source = source;
   c.name = source.empty() ? std::string("case") : source.stem().string();
   read_line(r, root, "name", true, c.name);
+  if (Status s = check_case_name(c.name); !s) r.fail("name", s.error().message);
   read_line(r, root, "description", false, c.description);
   if (!root.contains("mesh"))
     r.fail("mesh", "missing required key");

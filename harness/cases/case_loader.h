@@ -20,6 +20,10 @@ inline constexpr std::string_view need_names[] = {"fragments", "bonds", "stress"
 /// folder first, then the current directory.
 Result<Case> load_case(const std::filesystem::path& path);
 
+/// Error when `name` cannot be a case name: it must be a file name that stays in its folder (not empty,
+/// at most kMaxCaseNameBytes, no '/', '\\', "..", control characters or leading '.').
+Status check_case_name(const std::string& name);
+
 /// Checks case JSON given as text. `source` names it in errors, gives the default name (its stem)
 /// and the folder relative mesh files are resolved against; it need not exist.
 Result<Case> parse_case(std::string_view text, const std::filesystem::path& source);

@@ -8,7 +8,8 @@
 #include "harness/cases/case_library.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cli/command.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_targets.h"
 #include "harness/results/run_context.h"
 
 #include <fmt/core.h>
@@ -62,14 +63,8 @@ int run_accuracy(const AccuracyOptions& o) {
     if (!c) return fail_input("--case: " + c.error().message);
     cases.push_back(std::move(*c));
   }
-  std::filesystem::path json_path;
-  if (!o.json.empty()) {
-    json_path = o.json;
-    if (std::filesystem::is_directory(json_path)) return fail_input("--json: " + o.json + " is a folder, not a file");
-    const std::filesystem::path parent = json_path.parent_path();
-    if (!parent.empty() && !std::filesystem::is_directory(parent))
-      return fail_input("--json: folder " + parent.string() + " does not exist");
-  }
+  const std::filesystem::path json_path = o.json;
+  if (Status s = check_outputs({{"--json", json_path}}); !s) return fail_input(s.error().message);
 
   const auto start = std::chrono::steady_clock::now();
   FractureAccuracyOptions fo;

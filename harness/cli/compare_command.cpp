@@ -1,6 +1,7 @@
 #include "harness/cli/command.h"
 #include "harness/compare/grid_compare.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_targets.h"
 #include "harness/results/grid_reader.h"
 #include "harness/results/junit.h"
 
@@ -25,6 +26,7 @@ struct CompareCommandOptions {
 
 int run_compare(const CompareCommandOptions& o) {
   if (Status s = check_compare_options(o.compare); !s) return fail_input(s.error().message);
+  if (Status s = check_outputs({{"--markdown", o.markdown}, {"--junit", o.junit}}); !s) return fail_input(s.error().message);
   Result<StoredGrid> base = read_grid_results(o.base);
   if (!base) return fail_input(base.error().message);
   Result<StoredGrid> next = read_grid_results(o.next);

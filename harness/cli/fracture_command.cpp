@@ -2,6 +2,7 @@
 #include "algorithms/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
+#include "harness/output/output_targets.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "harness/results/fragment_writer.h"
 
@@ -27,6 +28,7 @@ struct FractureOptions {
 };
 
 int run_fracture(const FractureOptions& o) {
+  if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
   Result<Solid> solid = load_solid(o.mesh);
   if (!solid) return fail_input(solid.error().message);
   Result<std::unique_ptr<Fracturer>> fracturer = registries().fracturers.create(o.algorithm);

@@ -1,7 +1,9 @@
 #include "harness/cases/case_library.h"
 #include "harness/cli/command.h"
 #include "harness/grid/grid_runner.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_targets.h"
+#include "harness/process/child_process.h"
 #include "harness/results/grid_report.h"
 #include "harness/results/run_context.h"
 #include "harness/results/callgrind_dumps.h"
@@ -12,7 +14,6 @@
 
 #include <fmt/core.h>
 
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -71,15 +72,6 @@ bool parse_shard(const std::string& text, int& index, int& count) {
   }
 }
 
-/// True when `path` lies inside `folder` (after resolving both as far as they exist).
-bool inside(const std::filesystem::path& path, const std::filesystem::path& folder) {
-  std::error_code ec;
-  const auto p = std::filesystem::weakly_canonical(std::filesystem::absolute(path), ec);
-  const auto f = std::filesystem::weakly_canonical(std::filesystem::absolute(folder), ec);
-  const auto [fe, pe] = std::mismatch(f.begin(), f.end(), p.begin(), p.end());
-  return fe == f.end();
-}
-
 /// "cell k of N, elapsed, estimate" on one rewritten stderr line.
 class Progress {
  public:
@@ -107,40 +99,49 @@ std::filesystem::path csv_beside(const std::filesystem::path& json) {
 }
 
 /// Runs this same grid under callgrind with stage marks on and returns the child's results with the
-/// instruction counts attached (docs/compare.md, instruction mode).
+/// instruction counts attached (docs/compare.md, instruction mode). The child gets an argument
+/// vector, never a shell line: paths and names pass through as data.
 Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::filesystem::path& exe) {
-  if (std::system("valgrind --version >/dev/null 2>&1") != 0)
+  if (!program_runs("valgrind", "--version"))
     return Error{"--metric instructions: valgrind is not installed (scripts/install-deps installs it)"};
+  std::error_code ec;
   const auto folder = temporary_beside(std::filesystem::temp_directory_path() / "shatterbench-callgrind");
-  std::filesystem::create_directories(folder);
+  if (!std::filesystem::create_directories(folder, ec))
+    return Error{"--metric instructions: cannot create " + folder.string() + ": " + ec.message()};
   const auto child_json = folder / "child.json";
-  std::string cmd = fmt::format("valgrind --tool=callgrind --callgrind-out-file='{}' --dump-instr=no --dump-line=no '{}' grid "
-                                "--case '{}' --metric instructions --repetitions {} --json '{}'",
-                                (folder / "cg.out").string(), exe.string(), o.case_name, o.repetitions,
-                                child_json.string());
-  if (!o.fracturer.empty()) cmd += " --fracturer '" + o.fracturer + "'";
-  if (!o.stress.empty()) cmd += " --stress '" + o.stress + "'";
-  if (o.budget_ms) cmd += fmt::format(" --budget-ms {}", *o.budget_ms);
-  if (o.frames) cmd += fmt::format(" --frames {}", *o.frames);
+  std::vector<std::string> argv = {"valgrind", "--tool=callgrind", "--callgrind-out-file=" + (folder / "cg.out").string(),
+                                   "--dump-instr=no", "--dump-line=no", exe.string(), "grid", "--case", o.case_name,
+                                   "--metric", "instructions", "--repetitions", std::to_string(o.repetitions),
+                                   "--json", child_json.string()};
+  const auto add = [&argv](std::string flag, std::string value) {
+    argv.push_back(std::move(flag));
+    argv.push_back(std::move(value));
+  };
+  if (!o.fracturer.empty()) add("--fracturer", o.fracturer);
+  if (!o.stress.empty()) add("--stress", o.stress);
+  if (o.budget_ms) add("--budget-ms", fmt::format("{}", *o.budget_ms));
+  if (o.frames) add("--frames", std::to_string(*o.frames));
   const auto list = [](const std::vector<int>& v) {
     std::string t;
     for (std::size_t i = 0; i < v.size(); ++i) t += (i ? "," : "") + std::to_string(v[i]);
     return t;
   };
-  if (!o.prefracture.empty()) cmd += " --prefracture " + list(o.prefracture);
-  if (!o.runtime.empty()) cmd += " --runtime " + list(o.runtime);
-  if (o.no_skip) cmd += " --no-skip";
-  if (o.same_seed) cmd += " --same-seed";
-  if (o.no_cache) cmd += " --no-cache";
-  if (!o.cache_dir.empty()) cmd += " --cache-dir '" + o.cache_dir + "'";
-  if (!o.shard.empty()) cmd += " --shard " + o.shard;
-  if (!o.schedule.empty()) cmd += " --schedule " + o.schedule;
-  cmd += fmt::format(" --latency-budget-ms {}", o.latency_budget_ms);
-  cmd += fmt::format(" >/dev/null 2>'{}'", (folder / "child.log").string());
-  const int status = std::system(cmd.c_str());
-  const auto cleanup = [&] { std::filesystem::remove_all(folder); };
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) > 1) {
-    std::string log;
+  if (!o.prefracture.empty()) add("--prefracture", list(o.prefracture));
+  if (!o.runtime.empty()) add("--runtime", list(o.runtime));
+  if (o.no_skip) argv.push_back("--no-skip");
+  if (o.same_seed) argv.push_back("--same-seed");
+  if (o.no_cache) argv.push_back("--no-cache");
+  if (!o.cache_dir.empty()) add("--cache-dir", o.cache_dir);
+  if (!o.shard.empty()) add("--shard", o.shard);
+  if (!o.schedule.empty()) add("--schedule", o.schedule);
+  add("--latency-budget-ms", fmt::format("{}", o.latency_budget_ms));
+  ChildOptions child;
+  child.stdout_file = "/dev/null";
+  child.stderr_file = folder / "child.log";
+  const Result<ChildExit> ran = run_child(argv, child);
+  const auto cleanup = [&] { std::filesystem::remove_all(folder, ec); };
+  if (!ran || !ran->exited || ran->code > 1) {
+    std::string log = ran ? "" : ran.error().message;
     std::ifstream in(folder / "child.log");
     for (std::string line; std::getline(in, line);) log = line;  // the last line says why
     cleanup();
@@ -214,25 +215,24 @@ int run_grid_command(const GridCommandOptions& o) {
   if (o.update_baseline) {
     if (o.format != "shatter") return fail_input("--update-baseline: baselines are written in the shatter format");
     if (!o.shard.empty()) return fail_input("--update-baseline: a baseline is a whole grid, not a shard");
-    if (json_path.empty()) json_path = std::filesystem::path(o.baseline_dir) / (c->name + ".json");
-  } else if (!json_path.empty() && inside(json_path, o.baseline_dir)) {
-    return fail_input("--json: " + json_path.string() + " is in the baseline folder " + o.baseline_dir +
-                      "; baselines change only with --update-baseline");
+    if (json_path.empty()) {
+      json_path = std::filesystem::path(o.baseline_dir) / (c->name + ".json");
+      // The first baseline of a project makes its folder; no other output creates folders.
+      std::error_code ec;
+      std::filesystem::create_directories(o.baseline_dir, ec);
+      if (ec) return fail_input("--baseline-dir: cannot create " + o.baseline_dir + ": " + ec.message());
+    }
   }
   std::filesystem::path csv_path;
   if (!json_path.empty()) {
-    if (std::filesystem::is_directory(json_path)) return fail_input("--json: " + json_path.string() + " is a folder, not a file");
     if (json_path.extension() == ".csv")
       return fail_input("--json: " + json_path.string() + " must not end in .csv (the CSV is written beside it)");
     csv_path = csv_beside(json_path);
   }
-  if (!o.junit.empty() && std::filesystem::is_directory(o.junit)) return fail_input("--junit: " + o.junit + " is a folder");
-  for (const std::filesystem::path& out : {json_path, std::filesystem::path(o.junit)}) {
-    std::error_code ec;
-    const std::filesystem::path parent = out.parent_path();
-    if (!out.empty() && !parent.empty()) std::filesystem::create_directories(parent, ec);
-    if (ec) return fail_input("cannot create folder " + parent.string() + ": " + ec.message());
-  }
+  const std::vector<OutputTarget> outputs = {{"--json", json_path, false, o.update_baseline},
+                                             {"--json (its CSV twin)", csv_path, false, o.update_baseline},
+                                             {"--junit", o.junit, false, false}};
+  if (Status s = check_outputs(outputs, baseline_folders(o.baseline_dir)); !s) return fail_input(s.error().message);
 
   std::unique_ptr<PrefractureCache> cache;
   if (!o.no_cache) {
@@ -275,8 +275,9 @@ int run_grid_command(const GridCommandOptions& o) {
     const std::string json = o.format == "gbench"
                                  ? grid_to_gbench_json(*grid, prepared->spec.name, context).dump(1) + "\n"
                                  : grid_to_json(*grid, case_to_json(prepared->spec), context).dump(1) + "\n";
-    if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
-    if (Status s = write_file_atomically(csv_path, grid_to_csv(*grid)); !s) return fail_input("--json: " + s.error().message);
+    const std::string csv = grid_to_csv(*grid);
+    const FileContent set[] = {{json_path, json}, {csv_path, csv}};
+    if (Status s = write_files_atomically(set); !s) return fail_input("--json: " + s.error().message);
     if (o.update_baseline) std::fprintf(stderr, "shatterbench: baseline %s updated\n", json_path.string().c_str());
   }
   if (!o.junit.empty()) {

@@ -2,7 +2,9 @@
 
 #include "harness/cli/command.h"
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
@@ -49,5 +51,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "shatterbench: internal error: %s\n", e.what());
     return 3;
   }
+  // Output that did not reach its destination (a full disk, a closed pipe) is not a success.
+  std::cout.flush();
+  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout))
+    return fail_input(std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
   return exit_code;
 }

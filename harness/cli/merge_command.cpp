@@ -1,5 +1,6 @@
 #include "harness/cli/command.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_targets.h"
 #include "harness/results/grid_merge.h"
 #include "harness/results/grid_reader.h"
 #include "harness/results/grid_report.h"
@@ -20,6 +21,9 @@ struct MergeOptions {
 };
 
 int run_merge(const MergeOptions& o) {
+  std::filesystem::path csv = o.out;
+  csv.replace_extension(".csv");
+  if (Status s = check_outputs({{"--out", o.out}, {"--out (its CSV twin)", csv}}); !s) return fail_input(s.error().message);
   std::vector<StoredGrid> parts;
   for (const std::string& p : o.parts) {
     Result<StoredGrid> g = read_grid_results(p);
@@ -28,16 +32,10 @@ int run_merge(const MergeOptions& o) {
   }
   Result<StoredGrid> merged = merge_grids(parts, o.repetitions ? MergeParts::repetitions : MergeParts::shards);
   if (!merged) return fail_input(merged.error().message);
-  if (std::filesystem::is_directory(o.out)) return fail_input("--out: " + o.out + " is a folder, not a file");
-  std::error_code ec;
-  const auto parent = std::filesystem::path(o.out).parent_path();
-  if (!parent.empty()) std::filesystem::create_directories(parent, ec);
-  if (ec) return fail_input("--out: cannot create folder " + parent.string() + ": " + ec.message());
   const std::string json = grid_to_json(merged->grid, merged->case_block, merged->context).dump(1) + "\n";
-  if (Status s = write_file_atomically(o.out, json); !s) return fail_input("--out: " + s.error().message);
-  std::filesystem::path csv = o.out;
-  csv.replace_extension(".csv");
-  if (Status s = write_file_atomically(csv, grid_to_csv(merged->grid)); !s) return fail_input("--out: " + s.error().message);
+  const std::string table = grid_to_csv(merged->grid);
+  const FileContent set[] = {{o.out, json}, {csv, table}};
+  if (Status s = write_files_atomically(set); !s) return fail_input("--out: " + s.error().message);
   std::cout << grid_to_markdown(merged->grid, merged->case_name) << std::flush;
   return merged->grid.passed() || merged->metric == "instructions" ? exit_ok : exit_gate_failed;
 }

@@ -1,4 +1,5 @@
 #include "harness/cli/command.h"
+#include "harness/output/output_targets.h"
 #include "harness/report/report_inputs.h"
 #include "harness/report/report_writer.h"
 
@@ -19,6 +20,7 @@ struct ReportOptions {
 };
 
 int run_report(const ReportOptions& o) {
+  if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
   Result<ReportInputs> inputs = read_report_inputs(o.files);
   if (!inputs) return fail_input(inputs.error().message);
   ChosenCell cell;

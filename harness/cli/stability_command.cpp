@@ -1,6 +1,7 @@
 #include "algorithms/register_all.h"
 #include "harness/cli/command.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_targets.h"
 #include "harness/results/run_context.h"
 #include "harness/stability/stability_battery.h"
 #include "harness/stability/stability_table.h"
@@ -49,12 +50,7 @@ int run_stability_command(const StabilityCommandOptions& o) {
       return fail_input("--hazard: unknown hazard '" + h + "' (known: " + list + ")");
     }
   }
-  if (!o.json.empty()) {
-    const std::filesystem::path parent = std::filesystem::absolute(o.json).parent_path();
-    std::error_code ec;
-    if (!std::filesystem::is_directory(parent, ec))
-      return fail_input("--json: folder " + parent.string() + " does not exist");
-  }
+  if (Status s = check_outputs({{"--json", o.json}}); !s) return fail_input(s.error().message);
   StabilityOptions options;
   options.fracturers = *fracturers;
   options.models = *models;
@@ -69,7 +65,7 @@ int run_stability_command(const StabilityCommandOptions& o) {
     nlohmann::ordered_json doc = {{"context", to_json(current_context())}};
     const nlohmann::ordered_json body = stability_json(results, o.quick, o.timeout_s);
     for (const auto& [key, value] : body.items()) doc[key] = value;
-    if (Status s = write_file_atomically(o.json, doc.dump(2) + "\n"); !s) return fail_input(s.error().message);
+    if (Status s = write_file_atomically(o.json, doc.dump(2) + "\n"); !s) return fail_input("--json: " + s.error().message);
   }
   return all_valid_or_rejected(results) ? exit_ok : exit_gate_failed;
 }

@@ -1,6 +1,6 @@
 #include "harness/pipeline/prefracture_cache.h"
 
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
 
 #include <fmt/core.h>
 

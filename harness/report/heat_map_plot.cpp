@@ -1,7 +1,7 @@
 #include "harness/report/heat_map_plot.h"
 
 #include "harness/report/gnuplot_runner.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
 
 #include <fmt/core.h>
 

@@ -4,13 +4,13 @@
 #include "harness/report/pareto_plot.h"
 #include "harness/report/report_page.h"
 #include "harness/report/stage_bars_plot.h"
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_folder.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
 #include <set>
-#include <system_error>
 
 namespace shatter {
 namespace fs = std::filesystem;
@@ -89,35 +89,7 @@ Status fill(const ReportInputs& inputs, const fs::path& folder, const ChosenCell
 }  // namespace
 
 Status write_report(const ReportInputs& inputs, const fs::path& dir, const ChosenCell& cell) {
-  std::error_code ec;
-  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) return Error{dir.string() + ": exists and is not a folder"};
-  const fs::path parent = dir.parent_path().empty() ? fs::path(".") : dir.parent_path();
-  if (!fs::is_directory(parent, ec)) return Error{"--out: folder " + parent.string() + " does not exist"};
-  const fs::path temp = temporary_beside(dir);
-  if (!fs::create_directory(temp, ec)) return Error{temp.string() + ": cannot create folder: " + ec.message()};
-  if (Status s = fill(inputs, temp, cell); !s) {
-    fs::remove_all(temp, ec);
-    return s;
-  }
-  // Replace an earlier report: move it aside, move the new one in, then drop the old one.
-  fs::path old;
-  if (fs::exists(dir, ec)) {
-    old = temporary_beside(dir);
-    fs::rename(dir, old, ec);
-    if (ec) {
-      fs::remove_all(temp, ec);
-      return Error{dir.string() + ": cannot replace the earlier report: " + ec.message()};
-    }
-  }
-  fs::rename(temp, dir, ec);
-  if (ec) {
-    const std::string message = ec.message();
-    if (!old.empty()) fs::rename(old, dir, ec);
-    fs::remove_all(temp, ec);
-    return Error{dir.string() + ": cannot move the report into place: " + message};
-  }
-  if (!old.empty()) fs::remove_all(old, ec);
-  return {};
+  return write_folder_atomically(dir, [&](const fs::path& staging) { return fill(inputs, staging, cell); });
 }
 
 }  // namespace shatter

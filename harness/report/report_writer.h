@@ -17,8 +17,9 @@ using ChosenCell = std::optional<std::pair<int, int>>;
 /// Writes the report of `inputs` into `dir`: per grid file `grid-CASE.png` (heat map) and
 /// `stages-CASE.png` (stage bars of the chosen cell), per accuracy file `pareto-FAMILY-CASE.png` per
 /// family and case with an error, each with its `.dat` and `.gp`, and `report.md`. Everything is
-/// written into a fresh temporary folder beside `dir` and renamed into place at the end, replacing an
-/// earlier `dir`; on any error (gnuplot missing or failing, a chosen cell absent from a grid) nothing at
+/// written into a fresh staging folder beside `dir` and swapped into place at the end
+/// (harness/output/output_folder.h: `dir` must be absent, empty or an earlier shatterbench output); on
+/// any error (gnuplot missing or failing, a chosen cell absent from a grid) nothing at
 /// `dir` changes and the temporary folder is removed.
 Status write_report(const ReportInputs& inputs, const std::filesystem::path& dir, const ChosenCell& cell);
 

@@ -9,9 +9,9 @@
 
 namespace shatter {
 
-/// Writes `DIR/fragment_NNN.obj` (NNN from 000, at least three digits). The files are written into a
-/// fresh temporary folder beside DIR first; only when all are written are they moved in, after the
-/// fragment files of an earlier run in DIR are removed. On error nothing in DIR changes.
+/// Writes the folder `DIR` holding `fragment_NNN.obj` (NNN from 000, at least three digits), whole or
+/// not at all (harness/output/output_folder.h): DIR must be absent, empty or an earlier output of
+/// shatterbench, which is replaced as a whole. On error nothing in DIR changes.
 Status write_fragments(const std::filesystem::path& dir, std::span<const Fragment> fragments);
 
 }  // namespace shatter

@@ -1,6 +1,6 @@
 // Atomic file writes: the content arrives whole, replaces an old file, and a failure leaves nothing.
 
-#include "harness/results/atomic_file.h"
+#include "harness/output/atomic_file.h"
 
 #include <catch2/catch.hpp>
 

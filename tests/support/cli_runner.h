@@ -49,15 +49,11 @@ inline CliRun run_cli(const std::string& args) {
   return run;
 }
 
-/// Runs `shatterbench` with `args` as its argument vector (no shell: any byte but NUL passes through
-/// as written), with `cwd` as the working folder when not empty.
-inline CliRun run_cli_argv(const std::vector<std::string>& args, const std::filesystem::path& cwd = {}) {
-  static int counter = 0;
-  const auto dir = std::filesystem::temp_directory_path() / "shatter_cli_tests";
-  std::filesystem::create_directories(dir);
-  const std::string tag = std::to_string(::getpid()) + "_argv" + std::to_string(counter++);
-  const auto out = dir / ("out" + tag);
-  const auto err = dir / ("err" + tag);
+/// Starts `shatterbench` with `args` as its argument vector (no shell: any byte but NUL passes through
+/// as written), standard output and error into the files named, `cwd` as the working folder when not
+/// empty. Returns the child's pid, -1 when it could not start; the caller waits for it.
+inline pid_t spawn_cli(const std::vector<std::string>& args, const std::filesystem::path& cwd,
+                       const std::filesystem::path& out, const std::filesystem::path& err) {
   std::vector<std::string> words = {SHATTER_CLI};
   words.insert(words.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -69,11 +65,23 @@ inline CliRun run_cli_argv(const std::vector<std::string>& args, const std::file
   posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
   posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
+  pid_t pid = -1;
   const int spawned = posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
+  return spawned == 0 ? pid : -1;
+}
+
+/// Runs `shatterbench` with `args` as its argument vector (spawn_cli) and waits for it.
+inline CliRun run_cli_argv(const std::vector<std::string>& args, const std::filesystem::path& cwd = {}) {
+  static int counter = 0;
+  const auto dir = std::filesystem::temp_directory_path() / "shatter_cli_tests";
+  std::filesystem::create_directories(dir);
+  const std::string tag = std::to_string(::getpid()) + "_argv" + std::to_string(counter++);
+  const auto out = std::filesystem::absolute(dir / ("out" + tag));
+  const auto err = std::filesystem::absolute(dir / ("err" + tag));
   CliRun run;
-  if (spawned != 0) return run;
+  const pid_t pid = spawn_cli(args, cwd, out, err);
+  if (pid < 0) return run;
   int status = 0;
   ::waitpid(pid, &status, 0);
   run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
