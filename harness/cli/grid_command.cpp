@@ -238,6 +238,8 @@ int run_grid_command(const GridCommandOptions& o) {
   if (!o.no_cache) {
     const std::filesystem::path folder =
         o.cache_dir.empty() ? PrefractureCache::default_folder() : std::filesystem::path(o.cache_dir);
+    if (Status s = check_outside_baselines("--cache-dir", folder, baseline_folders(o.baseline_dir)); !s)
+      return fail_input(s.error().message);
     if (!folder.empty()) cache = std::make_unique<PrefractureCache>(folder);
   }
   options.cache = cache.get();

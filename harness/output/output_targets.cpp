@@ -54,11 +54,10 @@ Status check_one(const OutputTarget& t, const fs::path& where, const std::vector
     if (t.path.filename().empty() || t.path.filename() == "." || t.path.filename() == "..")
       return Error{name + ": not a file name"};
   }
+  if (!t.baseline_update)
+    if (Status s = check_outside_baselines(t.flag, t.path, protected_folders); !s) return s;
   for (const fs::path& folder : protected_folders) {
     const fs::path f = resolved(folder);
-    if (inside(where, f) && !t.baseline_update)
-      return Error{name + ": is in the baseline folder " + folder.string() +
-                   "; baselines change only with grid --update-baseline"};
     if (t.folder && inside(f, where))
       return Error{name + ": holds the baseline folder " + folder.string() + ": not replaced"};
   }
@@ -68,6 +67,16 @@ Status check_one(const OutputTarget& t, const fs::path& where, const std::vector
 }
 
 }  // namespace
+
+Status check_outside_baselines(const std::string& flag, const fs::path& path,
+                               const std::vector<fs::path>& protected_folders) {
+  const fs::path where = resolved(path);
+  for (const fs::path& folder : protected_folders)
+    if (inside(where, resolved(folder)))
+      return Error{flag + ": " + path.string() + ": is in the baseline folder " + folder.string() +
+                   "; baselines change only with grid --update-baseline"};
+  return {};
+}
 
 std::vector<fs::path> baseline_folders(const fs::path& extra) {
   std::vector<fs::path> folders = {fs::path("results") / "baselines"};

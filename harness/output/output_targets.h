@@ -30,6 +30,11 @@ struct OutputTarget {
 /// plus `extra` when not empty (grid's --baseline-dir).
 std::vector<std::filesystem::path> baseline_folders(const std::filesystem::path& extra = {});
 
+/// Error when `path` (a folder shatterbench adds files to, such as the pre-fracture cache) lies inside
+/// one of `protected_folders`; `flag` names the option.
+Status check_outside_baselines(const std::string& flag, const std::filesystem::path& path,
+                               const std::vector<std::filesystem::path>& protected_folders = baseline_folders());
+
 /// Checks `targets` against the rules above; the error names the flag, the path and the rule.
 /// Empty paths are skipped (an output that was not asked for).
 Status check_outputs(const std::vector<OutputTarget>& targets,

@@ -55,6 +55,8 @@ TEST_CASE("baselines: no writer but grid --update-baseline writes into the basel
       with(tiny, {"--json", "results/baselines/sub/../other.json"}),
       with(tiny, {"--junit", "results/baselines/junit.xml"}),
       with(tiny, {"--json", "results/../results/baselines/x.json"}),
+      {"grid", "--case", "building", "--prefracture", "10", "--runtime", "5", "--repetitions", "1", "--frames", "1",
+       "--cache-dir", "results/baselines/cache"},
       {"compare", "grid.json", "grid.json", "--markdown", "results/baselines/compare.md"},
       {"compare", "grid.json", "grid.json", "--junit", "results/baselines/building.csv"},
       {"merge", "grid.json", "--out", "results/baselines/building.json"},
