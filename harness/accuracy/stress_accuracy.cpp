@@ -67,6 +67,7 @@ Result<Structure> make_structure(SupportGraph graph, int slabs, const std::optio
   exact.reference = true;
   Result<StressResult> ref = StrengthCriterionModel(Criterion::von_mises, exact).evaluate(s.graph, loads, material);
   if (!ref) return ref.error();
+  if (!ref->report.converged) return Error{"the reference solve: " + convergence_failure(ref->report)};
   s.reference = std::move(*ref);
   if (beam) {
     s.first_failure = beam_first_failure(*beam, s.graph);
@@ -98,6 +99,10 @@ AccuracyPoint measure(const std::string& case_name, const Structure& s, const Se
     if (rep == 0) result = std::move(*r);
   }
   p.time_ms = median_of(p.samples_ms);
+  if (!result.report.converged) {  // its forces are not an answer: the point fails, no figure is kept
+    p.figures = {{"failed", convergence_failure(result.report)}};
+    return p;
+  }
 
   const bool has_forces = setting.model->driven_by_loads();
   const auto [first, ties] = most_utilized(result);

@@ -115,6 +115,11 @@ int run_accuracy(const AccuracyOptions& o) {
     const std::string json = accuracy_to_json(points, names, o.repetitions, wall_s, current_context()).dump(1) + "\n";
     if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
   }
+  // A stress point whose solve did not converge (or failed) has no figures: the run is not a success.
+  for (const AccuracyPoint& p : points)
+    if (p.family == "stress" && p.figures.contains("failed"))
+      return fail_check(fmt::format("{} {} {}: {}", p.case_name, p.algorithm, p.knob,
+                                    p.figures["failed"].get<std::string>()));
   return exit_ok;
 }
 
