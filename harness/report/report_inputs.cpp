@@ -1,5 +1,7 @@
 #include "harness/report/report_inputs.h"
 
+#include "harness/results/json_finite.h"
+
 #include <nlohmann/json.hpp>
 
 #include <fmt/core.h>
@@ -151,6 +153,8 @@ Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
     } catch (const Json::parse_error& e) {
       return Error{file + ": invalid JSON: " + e.what()};
     }
+    if (const std::optional<std::string> key = first_non_finite(j))
+      return Error{file + ": " + *key + ": a number that is not finite (too large for a double)"};
     try {
       if (!j.is_object()) throw KeyError{"top level: expected an object"};
       if (j.contains("cells")) {
