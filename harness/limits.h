@@ -60,4 +60,10 @@ inline constexpr int kMaxDebrisPerEvent = 100'000;
 /// the room left (`particles_spawned` counts what was spawned).
 inline constexpr int kMaxDebrisParticles = 1'000'000;
 
+/// Size of one pre-fracture cache entry (harness/pipeline/prefracture_cache.h), checked before it is
+/// read: an entry holds the fragments as raw doubles and indices, 24 bytes a vertex and 13 a triangle,
+/// so a 10-million-triangle solid in 1,000 pieces is about 400 MB. A larger entry is a miss, and one
+/// that would be larger is not stored.
+inline constexpr std::uint64_t kMaxCacheEntryBytes = 1ULL << 30;
+
 }  // namespace shatter
