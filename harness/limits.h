@@ -93,6 +93,8 @@ inline constexpr PhysicalRange kImpactRadiusRange{0.0, 1e6, false, "m"};
 /// Each coordinate of a position (centres, translations, anchor boxes, impact points, plane points,
 /// prism corners), m: within 1,000 km of the origin.
 inline constexpr PhysicalRange kCoordinateRange{-1e6, 1e6, false, "m"};
+/// `debris.speed`, m/s: ejecta of an explosion reach a few km/s.
+inline constexpr PhysicalRange kDebrisSpeedRange{0.0, 1e4, false, "m/s"};
 /// `mesh.scale` of a mesh file: a mesh in micrometres to one in thousands of kilometres.
 inline constexpr PhysicalRange kScaleRange{1e-6, 1e6, false, ""};
 

@@ -248,7 +248,7 @@ DebrisSpec read_debris(JsonReader& r, const json& v) {
   if (r.read(v, "debris", "per_impact", d.per_impact))
     r.at_least("debris.per_impact", d.per_impact, 0) &&
         r.at_most("debris.per_impact", d.per_impact, kMaxDebrisPerEvent);
-  if (r.read(v, "debris", "speed", d.speed)) r.non_negative("debris.speed", d.speed);
+  read_in_range(r, v, "debris", "speed", d.speed, kDebrisSpeedRange);
   if (r.read(v, "debris", "lifetime_frames", d.lifetime_frames)) r.at_least("debris.lifetime_frames", d.lifetime_frames, 1);
   return d;
 }
