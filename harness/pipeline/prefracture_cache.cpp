@@ -272,7 +272,13 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
   const std::uint64_t sum = checksum(w.data().data(), w.data().size());
   w.value(sum);
   if (w.data().size() > kMaxCacheEntryBytes) return false;  // it could not be read back
-  return static_cast<bool>(write_file_atomically(file_for(solid, key), w.data()));
+  // The folder is the cache's own: an entry that is not a regular file (a folder, a FIFO, a link left
+  // there) was a miss, and goes, so that the rename below can put the computed entry in its place.
+  const std::filesystem::path file = file_for(solid, key);
+  const std::filesystem::file_status status = std::filesystem::symlink_status(file, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    std::filesystem::remove_all(file, ec);
+  return static_cast<bool>(write_file_atomically(file, w.data()));
 }
 
 }  // namespace shatter
