@@ -44,7 +44,7 @@ bool decimal_number(std::string_view s) {
   return i == s.size();
 }
 
-std::string quoted(const std::string& text) {
+std::string quote_text(const std::string& text) {
   std::string out = "\"";
   for (const char c : text) out += static_cast<unsigned char>(c) < 0x20 ? '?' : c;
   return out + "\"";
@@ -63,9 +63,9 @@ std::string numeric_type(const CLI::Option& option) {
 
 std::string numeric_flag_error(const std::string& type, std::string& text) {
   if (type == "FLOAT") {
-    if (!decimal_number(text)) return "expected a decimal number, got " + quoted(text);
+    if (!decimal_number(text)) return "expected a decimal number, got " + quote_text(text);
     const double value = std::strtod(text.c_str(), nullptr);
-    if (!std::isfinite(value)) return "must be a finite number, got " + quoted(text);
+    if (!std::isfinite(value)) return "must be a finite number, got " + quote_text(text);
     return {};
   }
   if (type == "INT" || type == "UINT") {
@@ -73,7 +73,7 @@ std::string numeric_flag_error(const std::string& type, std::string& text) {
     const std::string_view digits = std::string_view(text).substr(negative ? 1 : 0);
     if (!all_digits(digits))
       return std::string(type == "INT" ? "expected an integer" : "expected a non-negative integer") + ", got " +
-             quoted(text);
+             quote_text(text);
     const std::string canonical = (negative ? "-" : "") + decimal(digits);
     std::errc ec{};
     if (type == "INT") {
@@ -83,7 +83,7 @@ std::string numeric_flag_error(const std::string& type, std::string& text) {
       std::uint64_t v = 0;
       ec = std::from_chars(canonical.data(), canonical.data() + canonical.size(), v).ec;
     }
-    if (ec != std::errc()) return "integer out of range, got " + quoted(text);
+    if (ec != std::errc()) return "integer out of range, got " + quote_text(text);
     text = canonical;
     return {};
   }
