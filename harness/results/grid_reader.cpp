@@ -272,13 +272,9 @@ Result<StoredGrid> read_grid_results(const std::filesystem::path& path) {
   if (!in) return Error{path.string() + ": cannot be read"};
   std::stringstream buffer;
   buffer << in.rdbuf();
-  Json j;
-  try {
-    j = Json::parse(buffer.str());
-  } catch (const Json::parse_error& e) {
-    return Error{path.string() + ": invalid JSON: " + e.what()};
-  }
-  Result<StoredGrid> out = grid_results_from_json(j, path.string());
+  Result<Json> j = parse_results_json(buffer.str(), path.string());
+  if (!j) return j.error();
+  Result<StoredGrid> out = grid_results_from_json(*j, path.string());
   if (out) out->path = path;
   return out;
 }

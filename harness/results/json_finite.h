@@ -4,9 +4,14 @@
 /// one Inf there makes medians, changes and ratios Inf or NaN. Every reader of a results file refuses
 /// the file when this finds one, naming the key (docs/stability.md, "no silent wrong number").
 
+#include "algorithms/core/result.h"
+
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace shatter {
 
@@ -30,5 +35,10 @@ std::optional<std::string> first_non_finite(const Json& j, const std::string& pa
   }
   return std::nullopt;
 }
+
+/// Parses the text of a results file read from `file`. nlohmann refuses a number that overflows a
+/// double while parsing (out_of_range 406, not a parse_error); either error becomes `<file>: <key
+/// path>: <what>`, the key path found by a second, path-tracking pass over the text.
+Result<nlohmann::ordered_json> parse_results_json(std::string_view text, const std::string& file);
 
 }  // namespace shatter
