@@ -99,10 +99,6 @@ AccuracyPoint measure(const std::string& case_name, const Structure& s, const Se
     if (rep == 0) result = std::move(*r);
   }
   p.time_ms = median_of(p.samples_ms);
-  if (!result.report.converged) {  // its forces are not an answer: the point fails, no figure is kept
-    p.figures = {{"failed", convergence_failure(result.report)}};
-    return p;
-  }
 
   const bool has_forces = setting.model->driven_by_loads();
   const auto [first, ties] = most_utilized(result);
@@ -132,6 +128,12 @@ AccuracyPoint measure(const std::string& case_name, const Structure& s, const Se
   p.figures["first_bond_ties"] = ties;
   p.figures["first_bond_expected"] = s.first_failure;
   p.figures["first_bond_match"] = match;
+  if (has_forces && !result.report.converged) {
+    // Its forces are not an answer: the point is marked failed and has no error (off the Pareto
+    // front); its residual and iterations stay, as a capped CG sweep is measured for exactly that.
+    p.figures["failed"] = convergence_failure(result.report);
+    p.error.reset();
+  }
   return p;
 }
 
