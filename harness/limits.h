@@ -65,4 +65,48 @@ inline constexpr int kMaxDebrisPerEvent = 100'000;
 /// the room left (`particles_spawned` counts what was spawned).
 inline constexpr int kMaxDebrisParticles = 1'000'000;
 
+/// The range a physical quantity of a case file must lie in (bounds inclusive unless marked open).
+struct PhysicalRange {
+  double min = 0.0;          ///< smallest accepted value
+  double max = 0.0;          ///< largest accepted value
+  bool max_open = false;     ///< the maximum itself is refused
+  const char* unit = "";     ///< unit of the bounds, for messages ("Pa")
+};
+
+// Physical ranges. Each is far wider than any real material or scene, and narrow enough that every
+// product the solve and the physics form (stiffness x length, density x volume x gravity, impulse /
+// mass) stays many orders of magnitude inside double: E = 1e300 or gravity 1e308 overflow there and
+// give Inf, NaN or all-zero forces, E = 1e-300 underflows. A value outside is refused at case load,
+// with one line naming the key (tests/hostile/wrong_answers_numbers_tests.cpp).
+
+/// `material.density`, kg/m^3: aerogels weigh about 1, osmium 22,590.
+inline constexpr PhysicalRange kDensityRange{1e-1, 1e5, false, "kg/m^3"};
+/// `material.young_modulus`, Pa: gels and soft foams about 1e4, diamond 1.2e12.
+inline constexpr PhysicalRange kYoungModulusRange{1e3, 1e13, false, "Pa"};
+/// `material.poisson_ratio`: [0, 0.5); 0.5 (incompressible) makes the shear terms singular.
+inline constexpr PhysicalRange kPoissonRatioRange{0.0, 0.5, true, ""};
+/// `material.*_strength`, Pa: snow and foams about 1e3 to 1e5, graphene 1.3e11.
+inline constexpr PhysicalRange kStrengthRange{1e2, 1e12, false, "Pa"};
+/// Each component of `gravity`, m/s^2: the Sun's surface is 274; 1e5 is 10,000 g.
+inline constexpr PhysicalRange kGravityComponentRange{-1e5, 1e5, false, "m/s^2"};
+/// `impacts[].impulse`, N s: a car crash is about 1e5.
+inline constexpr PhysicalRange kImpulseRange{0.0, 1e9, false, "N s"};
+/// Lengths of a case: sizes, radii, heights, depths, impact radii (m): a micrometre to 1,000 km.
+inline constexpr PhysicalRange kLengthRange{1e-6, 1e6, false, "m"};
+/// `impacts[].radius`, m: 0 (only the fragment hit) up to kLengthRange's maximum.
+inline constexpr PhysicalRange kImpactRadiusRange{0.0, 1e6, false, "m"};
+/// Each coordinate of a position (centres, translations, anchor boxes, impact points, plane points,
+/// prism corners), m: within 1,000 km of the origin.
+inline constexpr PhysicalRange kCoordinateRange{-1e6, 1e6, false, "m"};
+/// `debris.speed`, m/s: ejecta of an explosion reach a few km/s.
+inline constexpr PhysicalRange kDebrisSpeedRange{0.0, 1e4, false, "m/s"};
+/// `mesh.scale` of a mesh file: a mesh in micrometres to one in thousands of kilometres.
+inline constexpr PhysicalRange kScaleRange{1e-6, 1e6, false, ""};
+
+/// Size of one pre-fracture cache entry (harness/pipeline/prefracture_cache.h), checked before it is
+/// read: an entry holds the fragments as raw doubles and indices, 24 bytes a vertex and 13 a triangle,
+/// so a 10-million-triangle solid in 1,000 pieces is about 400 MB. A larger entry is a miss, and one
+/// that would be larger is not stored.
+inline constexpr std::uint64_t kMaxCacheEntryBytes = 1ULL << 30;
+
 }  // namespace shatter

@@ -10,13 +10,7 @@ namespace shatter {
 
 namespace {
 
-void accumulate(SolverReport& total, const SolverReport& r) {
-  total.solves += r.solves;
-  total.iterations += r.iterations;
-  total.converged = total.converged && r.converged;
-  total.residual = std::max(total.residual, r.residual);
-  total.unknowns = std::max(total.unknowns, r.unknowns);
-}
+void accumulate(SolverReport& total, const SolverReport& r) { add_solver_report(total, r); }
 
 }  // namespace
 
@@ -46,6 +40,8 @@ Result<PropagationResult> propagate(const StressModel& model, const SupportGraph
 
   std::vector<int> failing, touched;
   while (true) {
+    // Bonds are broken only on a converged solve: the utilizations of another are not an answer.
+    if (!current->report.converged) break;
     failing.clear();
     for (int i = 0; i < graph.bond_count(); ++i) {
       const BondStress& s = current->bonds[static_cast<std::size_t>(i)];

@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -50,10 +51,24 @@ struct BondStress {
 struct SolverReport {
   int solves = 0;                 ///< number of linear systems solved
   int iterations = 0;             ///< iterative-solver iterations, summed (0 for direct solves)
-  bool converged = true;          ///< every solve reached its tolerance
+  bool converged = true;          ///< every solve reached its tolerance (residual <= tolerance, finite)
   double residual = 0.0;          ///< largest relative residual |K u - f| / |f|
+  double tolerance = 0.0;         ///< largest relative residual a solve may leave and still be converged
+  bool finite = true;             ///< every displacement and bond figure came out finite (else not converged)
   int unknowns = 0;               ///< largest system size solved, #DOF
 };
+
+/// Marks `report` not converged unless its residual is finite and at most `tolerance` (which it
+/// records): the one rule by which every solve of the stress models reports convergence.
+void judge_convergence(SolverReport& report, double tolerance);
+
+/// Adds the solves of `r` to `total`: counts summed, the largest residual, tolerance and size, and
+/// converged only when both are.
+void add_solver_report(SolverReport& total, const SolverReport& r);
+
+/// "the solve did not converge (relative residual R > tolerance T)" for a report that did not
+/// converge (or "... gave non-finite forces or displacements"); empty when it did.
+std::string convergence_failure(const SolverReport& report);
 
 /// Work a model keeps between the evaluations of one cascade (e.g. the ordering and symbolic factor of
 /// the intact graph's stiffness). Opaque to callers; the model checks it fits the graph before use.
@@ -98,5 +113,13 @@ Status check_material(const Material& material);
 
 /// Error unless gravity and every point load are finite and refer to existing nodes.
 Status check_loads(const Loads& loads, const SupportGraph& graph);
+
+/// Error unless every force a model computed from the loads (6 per node: force, N, and moment, N m) is
+/// finite: finite inputs can still overflow (gravity times a huge mass).
+Status check_node_loads(std::span<const double> node_loads);
+
+/// Whether every displacement and bond figure of `result` is finite; marks its report not converged
+/// (and not finite) when one is not, so that no NaN or Inf is ever reported as a valid answer.
+bool judge_finite(StressResult& result);
 
 }  // namespace shatter

@@ -67,6 +67,7 @@ Result<Structure> make_structure(SupportGraph graph, int slabs, const std::optio
   exact.reference = true;
   Result<StressResult> ref = StrengthCriterionModel(Criterion::von_mises, exact).evaluate(s.graph, loads, material);
   if (!ref) return ref.error();
+  if (!ref->report.converged) return Error{"the reference solve: " + convergence_failure(ref->report)};
   s.reference = std::move(*ref);
   if (beam) {
     s.first_failure = beam_first_failure(*beam, s.graph);
@@ -127,6 +128,12 @@ AccuracyPoint measure(const std::string& case_name, const Structure& s, const Se
   p.figures["first_bond_ties"] = ties;
   p.figures["first_bond_expected"] = s.first_failure;
   p.figures["first_bond_match"] = match;
+  if (has_forces && !result.report.converged) {
+    // Its forces are not an answer: the point is marked failed and has no error (off the Pareto
+    // front); its residual and iterations stay, as a capped CG sweep is measured for exactly that.
+    p.figures["failed"] = convergence_failure(result.report);
+    p.error.reset();
+  }
   return p;
 }
 

@@ -3,6 +3,7 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cases/json_reader.h"
+#include "harness/cases/physical_range.h"
 #include "harness/limits.h"
 
 #include <fmt/format.h>
@@ -42,16 +43,12 @@ Material read_material(JsonReader& r, const json& v) {
   if (!r.object(v, "material", {"density", "young_modulus", "poisson_ratio", "tensile_strength",
                                 "compressive_strength", "shear_strength"}))
     return m;
-  const auto positive = [&](std::string_view key, double& field) {
-    if (r.read(v, "material", key, field)) r.positive(key_path("material", key), field);
-  };
-  positive("density", m.density);
-  positive("young_modulus", m.young_modulus);
-  if (r.read(v, "material", "poisson_ratio", m.poisson_ratio) && !(m.poisson_ratio > -1.0 && m.poisson_ratio < 0.5))
-    r.fail("material.poisson_ratio", fmt::format("must be in (-1, 0.5), got {}", m.poisson_ratio));
-  positive("tensile_strength", m.tensile_strength);
-  positive("compressive_strength", m.compressive_strength);
-  positive("shear_strength", m.shear_strength);
+  read_in_range(r, v, "material", "density", m.density, kDensityRange);
+  read_in_range(r, v, "material", "young_modulus", m.young_modulus, kYoungModulusRange);
+  read_in_range(r, v, "material", "poisson_ratio", m.poisson_ratio, kPoissonRatioRange);
+  read_in_range(r, v, "material", "tensile_strength", m.tensile_strength, kStrengthRange);
+  read_in_range(r, v, "material", "compressive_strength", m.compressive_strength, kStrengthRange);
+  read_in_range(r, v, "material", "shear_strength", m.shear_strength, kStrengthRange);
   return m;
 }
 
@@ -69,8 +66,8 @@ std::vector<Aabb> read_anchors(JsonReader& r, const json& v) {
     const json& box = v[i]["box"];
     Aabb a;
     if (!r.object(box, box_at, {"min", "max"})) break;
-    r.read_required(box, box_at, "min", a.min);
-    r.read_required(box, box_at, "max", a.max);
+    read_required_in_range(r, box, box_at, "min", a.min, kCoordinateRange);
+    read_required_in_range(r, box, box_at, "max", a.max, kCoordinateRange);
     if (!r.failed() && !(a.min.array() <= a.max.array()).all())
       r.fail(box_at, fmt::format("min must be <= max on every axis, got min [{}] max [{}]",
                                  fmt::join(a.min, ", "), fmt::join(a.max, ", ")));
@@ -98,7 +95,7 @@ PrefractureSpec read_prefracture(JsonReader& r, const json& v) {
       const std::string at = index_path("prefracture.planes", i);
       Plane plane;
       if (!r.object(planes[i], at, {"point", "normal"})) break;
-      r.read_required(planes[i], at, "point", plane.point);
+      read_required_in_range(r, planes[i], at, "point", plane.point, kCoordinateRange);
       if (r.read_required(planes[i], at, "normal", plane.normal)) r.non_zero(key_path(at, "normal"), plane.normal);
       p.planes.push_back(plane);
     }
@@ -129,13 +126,12 @@ std::vector<ImpactEvent> read_impacts(JsonReader& r, const json& v, int frames) 
     if (r.read_required(item, at, "frame", e.frame)) {
       r.at_least(key_path(at, "frame"), e.frame, 0) && r.at_most(key_path(at, "frame"), e.frame, frames - 1);
     }
-    r.read_required(item, at, "point", e.impact.point);
+    read_required_in_range(r, item, at, "point", e.impact.point, kCoordinateRange);
     if (r.read_required(item, at, "direction", e.impact.direction) &&
         r.non_zero(key_path(at, "direction"), e.impact.direction))
       e.impact.direction = unit(e.impact.direction);
-    if (r.read_required(item, at, "impulse", e.impact.impulse))
-      r.non_negative(key_path(at, "impulse"), e.impact.impulse);
-    if (r.read(item, at, "radius", e.impact.radius)) r.non_negative(key_path(at, "radius"), e.impact.radius);
+    read_required_in_range(r, item, at, "impulse", e.impact.impulse, kImpulseRange);
+    read_in_range(r, item, at, "radius", e.impact.radius, kImpactRadiusRange);
     impacts.push_back(e);
   }
   return impacts;
@@ -252,7 +248,7 @@ DebrisSpec read_debris(JsonReader& r, const json& v) {
   if (r.read(v, "debris", "per_impact", d.per_impact))
     r.at_least("debris.per_impact", d.per_impact, 0) &&
         r.at_most("debris.per_impact", d.per_impact, kMaxDebrisPerEvent);
-  if (r.read(v, "debris", "speed", d.speed)) r.non_negative("debris.speed", d.speed);
+  read_in_range(r, v, "debris", "speed", d.speed, kDebrisSpeedRange);
   if (r.read(v, "debris", "lifetime_frames", d.lifetime_frames)) r.at_least("debris.lifetime_frames", d.lifetime_frames, 1);
   return d;
 }
@@ -313,7 +309,7 @@ Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   else
     c.mesh = read_mesh_spec(r, root["mesh"], "mesh", source.parent_path());
   if (root.contains("material")) c.material = read_material(r, root["material"]);
-  r.read(root, "", "gravity", c.gravity);
+  read_in_range(r, root, "", "gravity", c.gravity, kGravityComponentRange);
   if (root.contains("anchors")) c.anchors = read_anchors(r, root["anchors"]);
   if (root.contains("prefracture")) c.prefracture = read_prefracture(r, root["prefracture"]);
   if (r.read(root, "", "frames", c.frames))

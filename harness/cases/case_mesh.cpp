@@ -1,5 +1,6 @@
 #include "harness/cases/case_mesh.h"
 
+#include "harness/cases/physical_range.h"
 #include "harness/cases/prism_mesh.h"
 
 #include "algorithms/core/mesh_io.h"
@@ -37,15 +38,14 @@ void check_triangles(JsonReader& r, std::string_view path, std::string_view coun
 
 /// Reads a required length (m, > 0).
 void read_length(JsonReader& r, const json& obj, std::string_view path, std::string_view key, double& out) {
-  if (r.read_required(obj, path, key, out)) r.positive(key_path(path, key), out);
+  read_required_in_range(r, obj, path, key, out, kLengthRange);
 }
 
 BoxSpec read_box(JsonReader& r, const json& v, std::string_view path) {
   BoxSpec s;
   if (!r.object(v, path, {"size", "center"})) return s;
-  if (r.read_required(v, path, "size", s.size))
-    for (int i = 0; i < 3; ++i) r.positive(index_path(key_path(path, "size"), i), s.size[i]);
-  r.read(v, path, "center", s.center);
+  read_required_in_range(r, v, path, "size", s.size, kLengthRange);
+  read_in_range(r, v, path, "center", s.center, kCoordinateRange);
   return s;
 }
 
@@ -53,7 +53,7 @@ SphereSpec read_sphere(JsonReader& r, const json& v, std::string_view path) {
   SphereSpec s;
   if (!r.object(v, path, {"radius", "center", "segments", "rings"})) return s;
   read_length(r, v, path, "radius", s.radius);
-  r.read(v, path, "center", s.center);
+  read_in_range(r, v, path, "center", s.center, kCoordinateRange);
   read_count(r, v, path, "segments", 3, s.segments);
   read_count(r, v, path, "rings", 2, s.rings);
   check_triangles(r, path, fmt::format("segments x rings = {} x {}", s.segments, s.rings),
@@ -66,7 +66,7 @@ CylinderSpec read_cylinder(JsonReader& r, const json& v, std::string_view path) 
   if (!r.object(v, path, {"radius", "height", "center", "segments"})) return s;
   read_length(r, v, path, "radius", s.radius);
   read_length(r, v, path, "height", s.height);
-  r.read(v, path, "center", s.center);
+  read_in_range(r, v, path, "center", s.center, kCoordinateRange);
   read_count(r, v, path, "segments", 3, s.segments);
   return s;
 }
@@ -79,7 +79,7 @@ TorusSpec read_torus(JsonReader& r, const json& v, std::string_view path) {
   if (!r.failed() && s.minor_radius >= s.major_radius)
     r.fail(key_path(path, "minor_radius"),
            fmt::format("must be < major_radius ({}), got {}", s.major_radius, s.minor_radius));
-  r.read(v, path, "center", s.center);
+  read_in_range(r, v, path, "center", s.center, kCoordinateRange);
   read_count(r, v, path, "major_segments", 3, s.major_segments);
   read_count(r, v, path, "minor_segments", 3, s.minor_segments);
   check_triangles(r, path, fmt::format("major_segments x minor_segments = {} x {}", s.major_segments, s.minor_segments),
@@ -96,7 +96,7 @@ TubeSpec read_tube(JsonReader& r, const json& v, std::string_view path) {
     r.fail(key_path(path, "inner_radius"),
            fmt::format("must be < outer_radius ({}), got {}", s.outer_radius, s.inner_radius));
   read_length(r, v, path, "height", s.height);
-  r.read(v, path, "center", s.center);
+  read_in_range(r, v, path, "center", s.center, kCoordinateRange);
   read_count(r, v, path, "segments", 3, s.segments);
   return s;
 }
@@ -134,9 +134,9 @@ MeshFileSpec read_file_spec(JsonReader& r, const json& v, std::string_view path,
     r.fail(file_at, fmt::format("mesh file \"{}\" not found{}", s.file, where));
     return s;
   }
-  if (r.read(v, path, "scale", s.scale)) r.positive(key_path(path, "scale"), s.scale);
+  read_in_range(r, v, path, "scale", s.scale, kScaleRange);
   r.read(v, path, "rotate", s.rotate_deg);
-  r.read(v, path, "translate", s.translate);
+  read_in_range(r, v, path, "translate", s.translate, kCoordinateRange);
   return s;
 }
 

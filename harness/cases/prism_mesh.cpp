@@ -1,6 +1,7 @@
 #include "harness/cases/prism_mesh.h"
 
 #include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "harness/cases/physical_range.h"
 #include "harness/limits.h"
 
 #include <fmt/core.h>
@@ -30,6 +31,8 @@ bool read_polygon(JsonReader& r, const json& value, const std::string& path, std
     }
     Vec2 p;
     if (!r.convert(corner[0], at, p.x()) || !r.convert(corner[1], at, p.y())) return false;
+    if (!check_in_range(r, at + "[0]", p.x(), kCoordinateRange) || !check_in_range(r, at + "[1]", p.y(), kCoordinateRange))
+      return false;
     out.push_back(p);
   }
   return true;
@@ -71,8 +74,8 @@ PrismSpec read_prism(JsonReader& r, const json& v, std::string_view path) {
                              kMaxPrismCorners));
     return s;
   }
-  if (r.read(v, path, "depth", s.depth)) r.positive(fmt::format("{}.depth", path), s.depth);
-  r.read(v, path, "y", s.y);
+  read_in_range(r, v, path, "depth", s.depth, kLengthRange);
+  read_in_range(r, v, path, "y", s.y, kCoordinateRange);
   return s;
 }
 

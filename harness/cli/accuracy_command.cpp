@@ -110,6 +110,13 @@ int run_accuracy(const AccuracyOptions& o) {
     const std::string json = accuracy_to_json(points, names, o.repetitions, wall_s, current_context()).dump(1) + "\n";
     if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
   }
+  // A stress point of the default solver whose solve did not converge (or failed) is not an answer:
+  // the run is not a success. The solver sweeps (CG with loose tolerances or capped iterations) are
+  // expected to stop short; their points are marked failed in the table and the JSON only.
+  for (const AccuracyPoint& p : points)
+    if (p.family == "stress" && p.figures.contains("failed") && p.knobs.value("solver", "default") == "default")
+      return fail_check(fmt::format("{} {} {}: {}", p.case_name, p.algorithm, p.knob,
+                                    p.figures["failed"].get<std::string>()));
   return exit_ok;
 }
 

@@ -5,12 +5,25 @@
 
 namespace shatter::cli {
 
-int fail_input(std::string_view message) {
+namespace {
+
+void print_line(const char* prefix, std::string_view message) {
   std::string line(message);
   for (char& c : line)
     if (c == '\n' || c == '\r') c = ' ';
-  std::fprintf(stderr, "shatterbench: error: %s\n", line.c_str());
+  std::fprintf(stderr, "shatterbench: %s: %s\n", prefix, line.c_str());
+}
+
+}  // namespace
+
+int fail_input(std::string_view message) {
+  print_line("error", message);
   return exit_bad_input;
+}
+
+int fail_check(std::string_view message) {
+  print_line("check failed", message);
+  return exit_gate_failed;
 }
 
 }  // namespace shatter::cli

@@ -14,6 +14,10 @@ enum ExitCode : int { exit_ok = 0, exit_gate_failed = 1, exit_bad_input = 2 };
 /// Prints "shatterbench: error: <message>" on stderr (one line) and returns exit_bad_input.
 int fail_input(std::string_view message);
 
+/// Prints "shatterbench: check failed: <message>" on stderr (one line) and returns exit_gate_failed:
+/// the command's own check found its result invalid, so nothing of it is reported as an answer.
+int fail_check(std::string_view message);
+
 /// `shatterbench list`.
 void add_list_command(CLI::App& app, int& exit_code);
 /// `shatterbench fracture`.

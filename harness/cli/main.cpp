@@ -1,6 +1,7 @@
 /// shatterbench: benchmark and regression harness for real-time destruction algorithms.
 
 #include "harness/cli/command.h"
+#include "harness/cli/numeric_flags.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -25,6 +26,7 @@ int main(int argc, char** argv) {
   add_accuracy_command(app, exit_code);
   add_report_command(app, exit_code);
   add_stability_command(app, exit_code);
+  check_numeric_flags(app);  // every numeric flag read strictly: no nan, inf, wrap or saturation
   if (argc > 1 && argv[1][0] != '-') {
     // CLI11 would only say that a subcommand is required: name the word and the commands instead.
     std::string known;

@@ -92,6 +92,8 @@ int run_stress(const StressOptions& o) {
   loads.gravity = c->gravity;
   auto result = propagate(**model, structure->graph, loads, c->material, {});
   if (!result) return fail_input(c->name + ": " + result.error().message);
+  // A solve that did not converge has no answer to print (its forces are not the structure's).
+  if (!result->report.converged) return fail_check(c->name + ": " + convergence_failure(result->report));
   if (o.json)
     print_json(model_name, structure->graph, *result);
   else

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace shatter {
 namespace {
@@ -23,7 +24,23 @@ double p99_of(std::vector<double> v) {
   return quantile_of_sorted(v, 0.99);
 }
 
-double relative_change(double base, double next) { return base > 0.0 ? next / base - 1.0 : 0.0; }
+/// new / base - 1, or nothing when it is undefined: a base of 0 (a stage that took no time, or no
+/// instructions), a negative base, or a base so small that the ratio overflows.
+std::optional<double> relative_change(double base, double next) {
+  if (!(base > 0.0)) return std::nullopt;
+  const double change = next / base - 1.0;
+  if (!std::isfinite(change)) return std::nullopt;
+  return change;
+}
+
+/// The Markdown of a row's change: a percentage, or the absolute change with its unit when the
+/// relative one is undefined.
+std::string change_text(const ComparisonRow& r, bool time) {
+  if (r.change_defined) return fmt::format("{:+.1f} %", 100 * r.change);
+  const double delta = r.new_median - r.base_median;
+  if (!std::isfinite(delta)) return "n/a";
+  return time ? fmt::format("{:+.3f} ms", delta) : fmt::format("{:+.0f} instr.", delta);
+}
 
 /// One timed or counted row from per-repetition samples.
 ComparisonRow measure_row(const std::string& cell, const std::string& what, const std::vector<double>& base,
@@ -34,13 +51,39 @@ ComparisonRow measure_row(const std::string& cell, const std::string& what, cons
   r.what = what;
   r.base_median = median_of(base);
   r.new_median = median_of(next);
-  r.change = relative_change(r.base_median, r.new_median);
+  const std::optional<double> change = relative_change(r.base_median, r.new_median);
+  r.change_defined = change.has_value();
+  r.change = change.value_or(0.0);
   r.base_p99 = p99_of(base_p99_set);
   r.new_p99 = p99_of(next_p99_set);
+  const double delta = r.new_median - r.base_median;
+  if (!r.change_defined) {
+    // No relative change: the absolute change decides, against --min-change-ms in time mode (with the
+    // U test as ever), and any increase of a count in instruction mode. A zero base hides nothing.
+    const bool time = o.metric == "time";
+    const MannWhitneyResult test = time ? mann_whitney_u(base, next) : MannWhitneyResult{};
+    if (time) r.p_value = test.p_value;
+    const bool large = time ? std::abs(delta) >= o.min_change_ms && delta != 0.0 : delta != 0.0;
+    const bool significant = !time || test.p_value < o.alpha;
+    const std::string absolute = time ? fmt::format("{:+.3f} ms from a base of {:.3g} ms", delta, r.base_median)
+                                  : fmt::format("{:+.0f} instructions from a base of {:.0f}", delta, r.base_median);
+    if (large && significant) {
+      r.verdict = delta > 0.0 ? Verdict::regressed : Verdict::improved;
+      r.note = time ? fmt::format("median {} (no relative change), >= {:g} ms and p = {:.2g} < {:g}", absolute,
+                                  o.min_change_ms, test.p_value, o.alpha)
+                    : fmt::format("{} (no relative change)", absolute);
+    } else if (large && delta > 0.0) {
+      r.note = fmt::format("slower by {} but p = {:.2g} >= {:g}: not shown to be more than noise", absolute,
+                           test.p_value, o.alpha);
+    } else if (delta > 0.0) {
+      r.note = fmt::format("slower by {}, less than {:g} ms", absolute, o.min_change_ms);
+    }
+    return r;
+  }
   if (o.metric == "time") {
     const MannWhitneyResult test = mann_whitney_u(base, next);
     r.p_value = test.p_value;
-    const bool significant = test.p_value < o.alpha && std::abs(r.new_median - r.base_median) >= o.min_change_ms;
+    const bool significant = test.p_value < o.alpha && std::abs(delta) >= o.min_change_ms;
     if (r.change > o.max_slowdown && significant) {
       r.verdict = Verdict::regressed;
       r.note = fmt::format("median +{:.1f} % > {:.1f} % and p = {:.2g} < {:g}", 100 * r.change, 100 * o.max_slowdown,
@@ -172,6 +215,9 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
     out.base_calibration_ms = median_of(bc);
     out.new_calibration_ms = median_of(nc);
     out.normalized = o.normalize && all && !bc.empty() && !nc.empty();
+    // A calibration time so small that the scale overflows would make every time Inf: not normalized.
+    for (const double c : bc) out.normalized = out.normalized && std::isfinite(out.base_calibration_ms / c);
+    for (const double c : nc) out.normalized = out.normalized && std::isfinite(out.base_calibration_ms / c);
   }
   if (o.metric == "time" && (!base.grid.same_seed || !next.grid.same_seed))
     out.warnings.push_back(
@@ -265,7 +311,8 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
     out += "\n";
   }
   for (const std::string& w : report.warnings) out += "> warning: " + w + "\n\n";
-  if (report.base_calibration_ms > 0.0 && report.new_calibration_ms > 0.0)
+  if (report.base_calibration_ms > 0.0 && report.new_calibration_ms > 0.0 &&
+      std::isfinite(report.new_calibration_ms / report.base_calibration_ms))
     out += fmt::format("Calibration workload: {:.3f} ms (base) and {:.3f} ms (new): the new run's machine was {:+.1f} % "
                        "slower{}\n\n",
                        report.base_calibration_ms, report.new_calibration_ms,
@@ -294,7 +341,11 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
   std::vector<const ComparisonRow*> rows;
   for (const ComparisonRow& r : report.rows) rows.push_back(&r);
   std::stable_sort(rows.begin(), rows.end(), [&](const auto* a, const auto* b) { return rank(a->verdict) < rank(b->verdict); });
-  const auto value = [&](double v) { return time ? fmt::format("{:.3f}", v) : fmt::format("{:.0f}", v); };
+  // Figures are finite (the reader refuses Inf); a difference of two huge ones may still overflow.
+  const auto value = [&](double v) {
+    if (!std::isfinite(v)) return std::string("n/a");
+    return time ? fmt::format("{:.3f}", v) : fmt::format("{:.0f}", v);
+  };
   for (const ComparisonRow* r : rows) {
     const char* verdict = r->verdict == Verdict::regressed ? "**regressed**"
                           : r->verdict == Verdict::failed  ? "**failed**"
@@ -305,8 +356,8 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
                          verdict, r->note.empty() ? "" : ": " + r->note);
       continue;
     }
-    out += fmt::format("| {} | {} | {} | {} | {:+.1f} % | {} | {} | {} | {}{} |\n", r->cell, r->what,
-                       value(r->base_median), value(r->new_median), 100 * r->change, value(r->base_p99),
+    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {}{} |\n", r->cell, r->what,
+                       value(r->base_median), value(r->new_median), change_text(*r, time), value(r->base_p99),
                        value(r->new_p99), r->p_value < 0 ? std::string("n/a") : fmt::format("{:.2g}", r->p_value),
                        verdict, r->note.empty() ? "" : ": " + r->note);
   }

@@ -51,7 +51,10 @@ struct ComparisonRow {
   std::string what;                ///< "worst frame", "stage stress", "accuracy"
   double base_median = 0.0;        ///< per-repetition medians (ms or instructions)
   double new_median = 0.0;
-  double change = 0.0;             ///< new / base - 1 (0 when base is 0)
+  double change = 0.0;             ///< new / base - 1; 0 when not change_defined
+  /// False when the base median is 0 (or so small that new / base is not finite): the relative change
+  /// is then undefined and the row is judged by the absolute change (printed instead of a percentage).
+  bool change_defined = true;
   double base_p99 = 0.0;           ///< 0.99-quantile (type 7): of every frame for "worst frame", else of the repetitions
   double new_p99 = 0.0;
   double p_value = -1.0;           ///< two-sided U test; < 0 when not tested (instructions, accuracy)

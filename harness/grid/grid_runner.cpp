@@ -277,6 +277,7 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
   const Case& c = prepared.spec;
   GridCell cell = grid_cell_settings(c, o, p, r);
   const double budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
+  SolverReport solves;  // of every repetition: a cell whose solve did not converge has no valid figures
   for (int rep = 0; rep < o.repetitions; ++rep) {
     RunOptions run;
     run.prefracture_fragments = p;
@@ -299,10 +300,15 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     cell.samples.push_back(sample_of(*result));
     if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
     add_error(cell.error, *result, rep == 0);
+    add_solver_report(solves, result->solver);
     merge_stages(cell, *result);
     if (o.progress) o.progress(++done, total);
   }
   summarise_cell(cell, budget_ms, o.latency_budget_ms);
+  if (!solves.converged) {
+    cell.failed = convergence_failure(solves);
+    cell.within_budget = cell.within_latency_budget = false;
+  }
   return cell;
 }
 

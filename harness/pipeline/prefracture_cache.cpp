@@ -1,14 +1,18 @@
 #include "harness/pipeline/prefracture_cache.h"
 
+#include "harness/limits.h"
 #include "harness/output/atomic_file.h"
 
 #include <fmt/core.h>
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
-#include <iterator>
-#include <sstream>
+#include <cerrno>
 #include <system_error>
 #include <type_traits>
 
@@ -19,7 +23,8 @@
 namespace shatter {
 namespace {
 
-constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '1'};
+// Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss).
+constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '2'};
 
 /// FNV-1a, 64 bit, fed field by field.
 class Fnv1a {
@@ -139,6 +144,48 @@ void write_header(Writer& w, std::uint64_t hash, const Mesh& solid, const Prefra
   w.bytes(key.fracturer.data(), key.fracturer.size());
 }
 
+/// FNV-1a of `n` bytes at `data`: the checksum a cache file ends with.
+std::uint64_t checksum(const char* data, std::size_t n) {
+  Fnv1a h;
+  h.bytes(data, n);
+  return h.hash();
+}
+
+/// The bytes of the regular file at `path` when it holds at most kMaxCacheEntryBytes; nothing for a
+/// missing, unreadable, larger or not regular file (a FIFO, a device, a folder, a link to one). The
+/// size is checked before anything is allocated, and no more than it is read.
+std::optional<std::string> read_entry(const std::filesystem::path& path) {
+  // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused below anyway.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return std::nullopt;
+  struct stat st {};
+  std::optional<std::string> out;
+  if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size >= 0 &&
+      static_cast<std::uint64_t>(st.st_size) <= kMaxCacheEntryBytes) {
+    std::string data(static_cast<std::size_t>(st.st_size), '\0');
+    std::size_t got = 0;
+    while (got < data.size()) {
+      const ssize_t n = ::read(fd, data.data() + got, data.size() - got);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      got += static_cast<std::size_t>(n);
+    }
+    char extra = 0;
+    if (got == data.size() && ::read(fd, &extra, 1) == 0) out = std::move(data);  // not grown since fstat
+  }
+  ::close(fd);
+  return out;
+}
+
+/// Whether every number of `f` is finite and every tag one of FaceTag's values.
+bool plausible(const Fragment& f) {
+  for (const Vec3& v : f.mesh.vertices)
+    if (!v.allFinite()) return false;
+  for (const FaceTag t : f.mesh.tags)
+    if (t != FaceTag::surface && t != FaceTag::cut) return false;
+  return std::isfinite(f.mass.volume) && f.mass.centroid.allFinite() && f.mass.inertia.allFinite();
+}
+
 }  // namespace
 
 std::string prefracture_cache_key(const Mesh& solid, const PrefractureKey& key) {
@@ -162,9 +209,15 @@ std::filesystem::path PrefractureCache::file_for(const Mesh& solid, const Prefra
 
 std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, const PrefractureKey& key) const {
   if (folder_.empty()) return std::nullopt;
-  std::ifstream in(file_for(solid, key), std::ios::binary);
-  if (!in) return std::nullopt;
-  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Any entry that cannot be read or fails a check is a miss: the run fractures again and store()
+  // replaces the entry, so a damaged cache costs one recomputation, never a refused case.
+  std::optional<std::string> file = read_entry(file_for(solid, key));
+  if (!file || file->size() < sizeof(std::uint64_t)) return std::nullopt;
+  std::uint64_t sum = 0;
+  std::memcpy(&sum, file->data() + file->size() - sizeof sum, sizeof sum);
+  file->resize(file->size() - sizeof sum);
+  if (checksum(file->data(), file->size()) != sum) return std::nullopt;
+  const std::string& data = *file;
 
   Writer expected;
   write_header(expected, key_hash(solid, key), solid, key);
@@ -189,7 +242,7 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
     r.bytes(&f.mass.volume, sizeof(double));
     r.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     r.bytes(f.mass.inertia.data(), 9 * sizeof(double));
-    if (!r.ok()) return std::nullopt;
+    if (!r.ok() || !plausible(f)) return std::nullopt;
     for (const Triangle& t : f.mesh.triangles)
       for (const std::int32_t i : t)
         if (i < 0 || static_cast<std::uint64_t>(i) >= nv) return std::nullopt;
@@ -216,7 +269,16 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
     w.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     w.bytes(f.mass.inertia.data(), 9 * sizeof(double));
   }
-  return static_cast<bool>(write_file_atomically(file_for(solid, key), w.data()));
+  const std::uint64_t sum = checksum(w.data().data(), w.data().size());
+  w.value(sum);
+  if (w.data().size() > kMaxCacheEntryBytes) return false;  // it could not be read back
+  // The folder is the cache's own: an entry that is not a regular file (a folder, a FIFO, a link left
+  // there) was a miss, and goes, so that the rename below can put the computed entry in its place.
+  const std::filesystem::path file = file_for(solid, key);
+  const std::filesystem::file_status status = std::filesystem::symlink_status(file, ec);
+  if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+    std::filesystem::remove_all(file, ec);
+  return static_cast<bool>(write_file_atomically(file, w.data()));
 }
 
 }  // namespace shatter

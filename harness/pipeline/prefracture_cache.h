@@ -7,7 +7,10 @@
 /// seed and explicit planes, and the identity of the code that fractures: the commit plus the size
 /// and modification time of the running executable, so a rebuild (even of uncommitted changes) never
 /// reads an old answer. A file also stores its parameters and the solid's counts and is checked on
-/// read; a file that does not match, is truncated or unreadable is a miss, never an error. Fragments
+/// read, and ends with the FNV-1a hash of its bytes. A file that does not match, is truncated,
+/// damaged (checksum), holds a non-finite number or an unknown face tag, is not a regular file, is
+/// larger than kMaxCacheEntryBytes (checked before reading) or unreadable is a miss, never an error:
+/// the pre-fracture is computed again and the entry replaced. Fragments
 /// are stored bit for bit (vertices and mass properties as raw doubles), so a cached run is identical
 /// to a computed one. Files are written atomically; the folder is created on first use. A folder that
 /// cannot be created or written disables the cache for the run (reported as a skip reason, not an

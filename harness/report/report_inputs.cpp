@@ -1,5 +1,7 @@
 #include "harness/report/report_inputs.h"
 
+#include "harness/results/json_finite.h"
+
 #include <nlohmann/json.hpp>
 
 #include <fmt/core.h>
@@ -145,12 +147,11 @@ Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
     if (!in) return Error{file + ": cannot read"};
     std::stringstream buffer;
     buffer << in.rdbuf();
-    Json j;
-    try {
-      j = Json::parse(buffer.str());
-    } catch (const Json::parse_error& e) {
-      return Error{file + ": invalid JSON: " + e.what()};
-    }
+    Result<nlohmann::ordered_json> parsed = parse_results_json(buffer.str(), file);
+    if (!parsed) return parsed.error();
+    const Json j = Json(*parsed);
+    if (const std::optional<std::string> key = first_non_finite(j))
+      return Error{file + ": " + *key + ": a number that is not finite (too large for a double)"};
     try {
       if (!j.is_object()) throw KeyError{"top level: expected an object"};
       if (j.contains("cells")) {

@@ -1,8 +1,12 @@
 #include "harness/results/grid_merge.h"
 
+#include "harness/results/grid_report.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <system_error>
 #include <map>
 #include <string>
 #include <set>
@@ -66,10 +70,46 @@ Result<StoredGrid> join_repetitions(const std::vector<StoredGrid>& parts, Stored
   return out;
 }
 
+/// True when `a` and `b` name one file: the same path once resolved, or the same device and inode
+/// (a hard link, a symbolic link, a bind mount).
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  if (a.empty() || b.empty()) return false;
+  std::error_code ec;
+  if (std::filesystem::equivalent(a, b, ec) && !ec) return true;
+  const auto ca = std::filesystem::weakly_canonical(std::filesystem::absolute(a, ec), ec);
+  const auto cb = std::filesystem::weakly_canonical(std::filesystem::absolute(b, ec), ec);
+  return !ec && ca == cb;
+}
+
+/// True when `a` and `b` hold one run: the same context (commit, machine, date, ...) and every cell
+/// with the same samples. Two runs never time every frame alike, so this is a copy of one run.
+bool same_run(const StoredGrid& a, const StoredGrid& b) {
+  if (to_json(a.context) != to_json(b.context) || a.grid.cells.size() != b.grid.cells.size()) return false;
+  for (std::size_t i = 0; i < a.grid.cells.size(); ++i)
+    if (grid_cell_to_json(a.grid.cells[i]) != grid_cell_to_json(b.grid.cells[i])) return false;
+  return true;
+}
+
+/// Error when two parts are one file or one run: merged, one run would count twice (its samples as
+/// new repetitions, narrowing the spread the U test sees).
+Status check_distinct_parts(const std::vector<StoredGrid>& parts) {
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    for (std::size_t k = i + 1; k < parts.size(); ++k) {
+      const std::string a = parts[i].path.string(), b = parts[k].path.string();
+      if (same_file(parts[i].path, parts[k].path))
+        return Error{fmt::format("merge: {} and {} are the same file: each run is merged once", a, b)};
+      if (same_run(parts[i], parts[k]))
+        return Error{fmt::format("merge: {} and {} hold the same run (same context and samples): each run is merged once",
+                                 a, b)};
+    }
+  return {};
+}
+
 }  // namespace
 
 Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts, MergeParts kind) {
   if (parts.empty()) return Error{"merge: no results to merge"};
+  if (Status s = check_distinct_parts(parts); !s) return s.error();
   const StoredGrid& first = parts.front();
   StoredGrid out = first;
   out.grid.cells.clear();

@@ -1,9 +1,12 @@
 #include "harness/results/grid_reader.h"
 
 #include "harness/results/grid_report.h"
+#include "harness/results/json_finite.h"
 
 #include <fmt/core.h>
 
+#include <climits>
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -33,10 +36,22 @@ double number(const Json& j, const std::string& key, const std::string& path) {
   return v.get<double>();
 }
 
-long long integer(const Json& j, const std::string& key, const std::string& path) {
+/// An integer that fits an int (every count of the file; seeds are read by seed_value).
+int integer(const Json& j, const std::string& key, const std::string& path) {
   const Json& v = at(j, key, path);
   if (!v.is_number_integer()) throw BadKey(join(path, key) + ": expected an integer");
-  return v.get<long long>();
+  const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(INT_MAX)
+                                           : v.get<std::int64_t>() >= INT_MIN && v.get<std::int64_t>() <= INT_MAX;
+  if (!fits) throw BadKey(join(path, key) + ": integer out of range, got " + v.dump());
+  return v.get<int>();
+}
+
+/// A seed: an integer in [0, 2^64 - 1].
+std::uint64_t seed_value(const Json& j, const std::string& key, const std::string& path) {
+  const Json& v = at(j, key, path);
+  if (!v.is_number_integer() || (!v.is_number_unsigned() && v.get<std::int64_t>() < 0))
+    throw BadKey(join(path, key) + ": expected an integer in [0, 2^64 - 1]");
+  return v.get<std::uint64_t>();
 }
 
 bool boolean(const Json& j, const std::string& key, const std::string& path) {
@@ -89,7 +104,7 @@ InstructionCounts instructions(const Json& j, const std::string& path) {
 
 GridSample sample(const Json& j, const std::string& path) {
   GridSample s;
-  s.seed = static_cast<std::uint64_t>(integer(j, "seed", path));
+  s.seed = seed_value(j, "seed", path);
   s.frame_ms = numbers(j, "frame_ms", path);
   s.event_ms = number(j, "event_ms", path);
   s.event_frame = static_cast<int>(integer(j, "event_frame", path));
@@ -216,6 +231,8 @@ Result<GridCell> grid_cell_from_json(const nlohmann::ordered_json& j, const std:
 }
 
 Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const std::string& what) {
+  if (const std::optional<std::string> key = first_non_finite(j))
+    return Error{what + ": " + *key + ": a number that is not finite (too large for a double)"};
   try {
     StoredGrid out;
     const long long version = integer(j, "schema_version", "");
@@ -255,13 +272,9 @@ Result<StoredGrid> read_grid_results(const std::filesystem::path& path) {
   if (!in) return Error{path.string() + ": cannot be read"};
   std::stringstream buffer;
   buffer << in.rdbuf();
-  Json j;
-  try {
-    j = Json::parse(buffer.str());
-  } catch (const Json::parse_error& e) {
-    return Error{path.string() + ": invalid JSON: " + e.what()};
-  }
-  Result<StoredGrid> out = grid_results_from_json(j, path.string());
+  Result<Json> j = parse_results_json(buffer.str(), path.string());
+  if (!j) return j.error();
+  Result<StoredGrid> out = grid_results_from_json(*j, path.string());
   if (out) out->path = path;
   return out;
 }

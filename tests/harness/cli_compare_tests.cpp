@@ -52,11 +52,11 @@ TEST_CASE("cli: merge of two shards holds the cells of the unsharded run", "[cli
     for (const char* key : {"seed", "fragments", "hit", "pieces", "broken_bonds", "falling_clusters", "bodies"})
       CHECK(a.at("samples")[0].at(key) == m.at("samples")[0].at(key));
   }
-  // A shard twice is refused, naming the cell.
+  // A shard twice is refused, naming the file.
   const auto twice = run_cli("merge " + (dir / "s0.json").string() + " " + (dir / "s0.json").string() + " --out " +
                              (dir / "bad.json").string());
   CHECK(twice.exit_code == 2);
-  CHECK(twice.err.find("appears twice") != std::string::npos);
+  CHECK(twice.err.find("are the same file") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(dir / "bad.json"));
 }
 

@@ -215,6 +215,10 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
 
 }  // namespace
 
+double solve_tolerance(const SpringSolverSettings& settings) {
+  return std::max(settings.residual_tolerance, settings.cg_tolerance);
+}
+
 bool refinement_pays(double last, double now, const SpringSolverSettings& settings) {
   return now > 0.0 && now * settings.refinement_gain <= last;
 }
@@ -243,6 +247,7 @@ SolverReport solve_linear(SparseMatrix&& k, const Vector& f, Vector& u, const Sp
   const double f_norm = f.norm();
   if (!residual_norm || !report.converged) residual_norm = (f - sparse_product(k, u)).norm();
   report.residual = f_norm > 0.0 ? *residual_norm / f_norm : 0.0;
+  judge_convergence(report, solve_tolerance(settings));
   if (!settings.reference) keep_solved_blocks(k, settings, std::move(blocks));
   return report;
 }

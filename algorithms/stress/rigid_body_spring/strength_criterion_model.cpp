@@ -53,6 +53,7 @@ Result<StressResult> StrengthCriterionModel::reevaluate(const SupportGraph& grap
   }
 
   const std::vector<double> f = node_loads(graph, loads, material);
+  if (Status s = check_node_loads(f); !s) return s.error();
   std::vector<BondForces> forces(graph.bonds.size());
   std::optional<SolverReport> report;
   if (!settings_.reference) {
@@ -73,19 +74,18 @@ Result<StressResult> StrengthCriterionModel::reevaluate(const SupportGraph& grap
       if (!solve[c]) continue;
       const SolverReport r = solve_component(graph, components.nodes[c], components.bonds[c], f, material, settings_,
                                              out.displacements, forces);
-      report->solves += r.solves;
-      report->iterations += r.iterations;
-      report->converged = report->converged && r.converged;
-      report->residual = std::max(report->residual, r.residual);
-      report->unknowns = std::max(report->unknowns, r.unknowns);
+      add_solver_report(*report, r);
     }
   }
+  // Both paths (per component, cascade) are judged by the one rule: residual within the tolerance.
+  judge_convergence(*report, solve_tolerance(settings_));
   out.report = *report;
   for (std::size_t c = 0; c < components.nodes.size(); ++c)
     if (solve[c])
       for (const int b : components.bonds[c])
         out.bonds[static_cast<std::size_t>(b)] = bond_stress(graph.bonds[static_cast<std::size_t>(b)],
                                                              forces[static_cast<std::size_t>(b)], material, criterion_);
+  judge_finite(out);
   return out;
 }
 
