@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -326,7 +327,7 @@ void add_grid_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--stress", o->stress, "Stress model (default: the case's stress.model)");
   cmd->add_option("--budget-ms", o->budget_ms, "Frame budget in ms (default: the case's budget_ms, 33.3)");
   cmd->add_option("--repetitions", o->repetitions, "Runs per cell, each with its own seed (default 3)")
-      ->check(CLI::PositiveNumber);
+      ->check(CLI::Range(1, std::numeric_limits<int>::max()));  // kMaxRepetitions: check_grid_limits
   cmd->add_option("--frames", o->frames, "Frames per run (default: the case's frames)");
   cmd->add_option("--json", o->json, "Write the results JSON here (and the CSV beside it, .csv)");
   cmd->add_option("--format", o->format, "Format of the --json file: shatter (default) or gbench (Google Benchmark's)");
