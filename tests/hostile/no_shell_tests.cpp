@@ -70,8 +70,16 @@ TEST_CASE("no shell: instruction counting passes a hostile cache folder to valgr
                                    cache.string(), "--json", (dir / "g.json").string()},
                                   dir);
   INFO(run.err);
+#if defined(__SANITIZE_ADDRESS__)
+  // valgrind cannot run an AddressSanitizer build: the run fails with one line, and still nothing
+  // planted in the path runs.
+  CHECK(run.exit_code == 2);
+  CHECK(line_count(run.err) == 1);
+  CHECK_THAT(run.err, Catch::Contains("callgrind"));
+#else
   REQUIRE(run.exit_code == 0);
   CHECK(fs::is_directory(cache));  // the cache was written at exactly that path
   CHECK(fs::exists(dir / "g.json"));
+#endif
   for (const char* planted : {"PWNED", "PWNED2", "PWNED3"}) CHECK_FALSE(fs::exists(dir / planted));
 }
