@@ -8,6 +8,7 @@
 #include "harness/cases/case_library.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cli/command.h"
+#include "harness/cli/failed_checks.h"
 #include "harness/results/atomic_file.h"
 #include "harness/results/run_context.h"
 
@@ -115,7 +116,13 @@ int run_accuracy(const AccuracyOptions& o) {
     const std::string json = accuracy_to_json(points, names, o.repetitions, wall_s, current_context()).dump(1) + "\n";
     if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
   }
-  return exit_ok;
+  // Every point is printed; one whose fracture fails its own checks makes the run fail.
+  int failed_checks = 0;
+  for (const AccuracyPoint& p : points)
+    if (p.figures.contains("failed_checks"))
+      failed_checks += print_failed_checks(p.case_name + " " + p.algorithm + " " + p.knob,
+                                           p.figures["failed_checks"].get<std::vector<std::string>>());
+  return failed_checks > 0 ? exit_gate_failed : exit_ok;
 }
 
 }  // namespace
