@@ -140,7 +140,7 @@ TEST_CASE("solids: shells that cross are refused, naming both and a pair of tria
       {"two overlapping cubes", combine({{box(1.0)}, {box(1.0, Vec3(0.5, 0.25, 0.125))}})},
       {"a sphere through a box face", combine({{box(2.0)}, {sphere(0.5, Vec3(1.0, 0.1, 0.2))}})},
       {"an inward box crossing an outward one", combine({{box(2.0)}, {box(1.0, Vec3(0.9, 0, 0)), true}})},
-      {"a copy of the same box", combine({{box(1.0)}, {box(1.0)}})},
+      {"a copy of the box moved by a millimetre", combine({{box(1.0)}, {box(1.0, Vec3(1e-3, 2e-3, 3e-3))}})},
       {"boxes touching over a face", combine({{box(1.0)}, {box(1.0, Vec3(1.0, 0.3, 0.2))}})},
   };
   for (const auto& [name, mesh] : meshes) {
@@ -379,7 +379,7 @@ TEST_CASE("solids: the CLI fractures disjoint shells and a flipped solid, and ch
       CHECK(out["metrics"]["volume_error"].get<double>() <= 1e-6);
     }
   }
-  const test::CliRun table = test::run_cli_argv({"table", "--mesh", two, "--mesh", inward, "--fragments", "3,9", "--repetitions", "1"});
+  const test::CliRun table = test::run_cli_argv({"table", "--mesh", two, "--mesh", inward, "--fragments", "3", "9", "--repetitions", "1"});
   CHECK(table.exit_code == 0);
   CHECK(table.err.empty());
   CHECK(table.out.find("| NO |") == std::string::npos);
