@@ -62,9 +62,44 @@ void measure_volumes(const Mesh& mesh, std::vector<Shell>& shells) {
   }
 }
 
-/// The shell's triangles as a mesh of their own (only the vertices they use).
+/// Bounding box of each shell, m.
+std::vector<Aabb> shell_boxes(const Mesh& mesh, const std::vector<Shell>& shells) {
+  std::vector<Aabb> box(shells.size());
+  for (std::size_t s = 0; s < shells.size(); ++s)
+    for (const std::int32_t f : shells[s].triangles)
+      for (const std::int32_t v : mesh.triangles[static_cast<std::size_t>(f)]) box[s].extend(mesh.vertices[static_cast<std::size_t>(v)]);
+  return box;
+}
+
+/// True when two of the boxes overlap (closed boxes: touching counts). Sweep and prune along the
+/// axis on which the boxes spread most, stopping at the first overlap: shells whose boxes are
+/// pairwise apart can neither cross nor hold one another, the common case of a mesh of separate parts.
+bool any_boxes_overlap(const std::vector<Aabb>& box) {
+  Aabb centres;
+  for (const Aabb& b : box) centres.extend(0.5 * (b.min + b.max));
+  int axis = 0;
+  (centres.max - centres.min).maxCoeff(&axis);
+  std::vector<std::int32_t> order(box.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::int32_t a, std::int32_t b) {
+    return box[static_cast<std::size_t>(a)].min[axis] < box[static_cast<std::size_t>(b)].min[axis];
+  });
+  std::vector<std::int32_t> active;
+  for (const std::int32_t i : order) {
+    const Aabb& b = box[static_cast<std::size_t>(i)];
+    std::erase_if(active, [&](std::int32_t j) { return box[static_cast<std::size_t>(j)].max[axis] < b.min[axis]; });
+    for (const std::int32_t j : active) {
+      const Aabb& a = box[static_cast<std::size_t>(j)];
+      if ((a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all()) return true;
+    }
+    active.push_back(i);
+  }
+  return false;
+}
+
+/// The shell's triangles as a mesh of their own (only the vertices they use). `scratch` holds -1
+/// per vertex of `mesh` on entry and on return.
 Mesh shell_mesh(const Mesh& mesh, const Shell& shell, std::vector<std::int32_t>& scratch) {
-  scratch.assign(mesh.vertices.size(), -1);
   Mesh out;
   for (const std::int32_t f : shell.triangles) {
     Triangle t = mesh.triangles[static_cast<std::size_t>(f)];
@@ -75,16 +110,17 @@ Mesh shell_mesh(const Mesh& mesh, const Shell& shell, std::vector<std::int32_t>&
     }
     out.add_triangle(t[0], t[1], t[2], FaceTag::surface);
   }
+  for (const std::int32_t f : shell.triangles)
+    for (const std::int32_t v : mesh.triangles[static_cast<std::size_t>(f)]) scratch[static_cast<std::size_t>(v)] = -1;
   return out;
 }
 
 /// Sets every shell's innermost container. A point of each shell (the centroid of its first
 /// triangle, on no other shell because no two shells cross) is bucketed in a uniform grid of about
 /// one point per cell; each shell tests, by winding number, the points in the cells its box covers.
-void find_containers(const Mesh& mesh, std::vector<Shell>& shells) {
+void find_containers(const Mesh& mesh, const std::vector<Aabb>& box, std::vector<Shell>& shells) {
   const std::size_t k = shells.size();
   std::vector<Vec3> point(k);
-  std::vector<Aabb> box(k);
   Aabb all;
   for (std::size_t s = 0; s < k; ++s) {
     const Triangle& t = mesh.triangles[static_cast<std::size_t>(shells[s].triangles.front())];
@@ -92,8 +128,6 @@ void find_containers(const Mesh& mesh, std::vector<Shell>& shells) {
                 mesh.vertices[static_cast<std::size_t>(t[2])]) /
                3.0;
     all.extend(point[s]);
-    for (const std::int32_t f : shells[s].triangles)
-      for (const std::int32_t v : mesh.triangles[static_cast<std::size_t>(f)]) box[s].extend(mesh.vertices[static_cast<std::size_t>(v)]);
   }
   const int n = std::max(1, static_cast<int>(std::ceil(std::cbrt(static_cast<double>(k)))));
   const Vec3 size = all.max - all.min;
@@ -114,7 +148,7 @@ void find_containers(const Mesh& mesh, std::vector<Shell>& shells) {
   std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
   for (std::size_t s = 0; s < k; ++s) member[static_cast<std::size_t>(fill[cell_of[s]]++)] = static_cast<std::int32_t>(s);
 
-  std::vector<std::int32_t> scratch;
+  std::vector<std::int32_t> scratch(mesh.vertices.size(), -1);
   for (std::size_t j = 0; j < k; ++j) {
     std::optional<WindingNumberQuery> inside;  // built when a point first falls in the box
     std::array<int, 3> low{}, high{};
@@ -177,7 +211,8 @@ ShellClassification classify_shells(const Mesh& mesh) {
   if (mesh.triangles.empty()) return c;
   const std::vector<std::int32_t> shell_of = split_shells(mesh, c.shells);
   measure_volumes(mesh, c.shells);
-  if (c.shells.size() > 1) {
+  const std::vector<Aabb> boxes = c.shells.size() > 1 ? shell_boxes(mesh, c.shells) : std::vector<Aabb>{};
+  if (c.shells.size() > 1 && any_boxes_overlap(boxes)) {
     if (const auto pair = find_intersection_between_parts(mesh, shell_of)) {
       c.verdict = SolidVerdict::invalid;
       c.reason = "shells cross: " + shell_name(c, shell_of[static_cast<std::size_t>((*pair)[0])]) + " and " +
@@ -185,7 +220,7 @@ ShellClassification classify_shells(const Mesh& mesh) {
                  std::to_string((*pair)[0]) + " and " + std::to_string((*pair)[1]) + ")";
       return c;
     }
-    find_containers(mesh, c.shells);
+    find_containers(mesh, boxes, c.shells);
   }
   c.inverted = std::all_of(c.shells.begin(), c.shells.end(), [](const Shell& s) { return s.container >= 0 || !s.outward(); });
   judge(c);

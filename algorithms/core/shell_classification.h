@@ -11,10 +11,11 @@
 /// fracturer then returns nonsense. A mesh whose outermost shells all face inward is the same
 /// solid turned inside out: it reads as a solid once every triangle is reversed.
 ///
-/// Cost: one pass over the triangles for a single shell (almost every mesh). With several shells,
-/// an exact test of the triangle pairs of different shells (self_intersection.h, O(#F) on a
-/// surface-like mesh), then one winding-number query per shell against each shell whose bounding
-/// box holds a point of it, the candidates found through a uniform grid of those points.
+/// Cost: one pass over the triangles for a single shell (almost every mesh), and for shells whose
+/// bounding boxes are pairwise apart (a sweep over the boxes). Otherwise an exact test of the
+/// triangle pairs of different shells (self_intersection.h, O(#F) on a surface-like mesh), then one
+/// winding-number query per shell against each shell whose bounding box holds a point of it, the
+/// candidates found through a uniform grid of those points.
 
 #include "algorithms/core/mesh.h"
 
