@@ -187,10 +187,18 @@ TEST_CASE("solids: disjoint outward shells are one solid whose volume is their s
   }
   const Mesh ball = sphere(1.0, Vec3(5, 0, 0));
   const double ball_volume = signed_volume(ball);
+  // Two linked rings: their boxes overlap and each passes through the other's hole, yet they
+  // neither cross nor hold one another. The second is the first turned a quarter about x (a
+  // rotation keeps the orientation) and moved along x by the major radius.
+  const Mesh ring = make_torus(1.0, 0.25, 32, 12);
+  Mesh linked = ring;
+  for (Vec3& p : linked.vertices) p = Vec3(p.x() + 1.0, -p.z(), p.y());
+  const double ring_volume = signed_volume(ring);
   const std::vector<Accepted> cases = {
       {"two boxes", combine({{box(1.0)}, {box(2.0, Vec3(3, 0, 0))}}), 1.0 + 8.0, 2},
       {"a box and a sphere", combine({{box(2.0)}, {ball}}), 8.0 + ball_volume, 2},
       {"ten boxes in a row", combine(row), row_volume, 10},
+      {"two linked rings", combine({{ring}, {linked}}), 2.0 * ring_volume, 2},
       {"two boxes apart on the diagonal", combine({{box(1.0)}, {box(1.0, Vec3(1.5, 1.5, 1.5))}}), 2.0, 2},
   };
   for (const Accepted& a : cases) {
