@@ -1,8 +1,6 @@
 #include "algorithms/core/mesh_validation.h"
 
 #include "algorithms/core/pinched_vertices.h"
-
-#include "algorithms/core/mass_properties.h"
 #include "algorithms/core/shell_classification.h"
 
 #include <Eigen/Geometry>
