@@ -1,8 +1,7 @@
 #include "algorithms/core/mesh_validation.h"
 
 #include "algorithms/core/pinched_vertices.h"
-
-#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/shell_classification.h"
 
 #include <Eigen/Geometry>
 
@@ -216,11 +215,17 @@ Result<ValidationReport> validate_solid(Mesh& mesh, const std::string& what) {
   // Sheets meeting at a single vertex (often made so by merging coincident vertices) get a vertex each.
   report.split_pinched_vertices = split_pinched_vertices(mesh);
 
-  // A closed mesh whose volume rounds to nothing relative to its size is flat: reject it.
-  const double volume = signed_volume(mesh);
+  // A closed shell whose volume rounds to nothing relative to the mesh's size is flat: reject it.
+  const ShellClassification shells = classify_shells(mesh);
   const double size = bounding_box(mesh).diagonal();
-  if (std::abs(volume) <= 1e-14 * size * size * size) return fail("zero volume (flat closed mesh)");
-  if (volume < 0.0) {
+  for (int s = 0; s < static_cast<int>(shells.shells.size()); ++s)
+    if (std::abs(shells.shells[static_cast<std::size_t>(s)].volume) <= 1e-14 * size * size * size)
+      return fail(shells.shells.size() == 1 ? "zero volume (flat closed mesh)"
+                                            : "zero volume: " + shell_name(shells, s) + " is flat");
+  // One rule for every solid: outward shells that neither cross nor nest (shell_classification.h).
+  if (shells.verdict != SolidVerdict::solid) return fail(shells.reason);
+  report.shells = static_cast<int>(shells.shells.size());
+  if (shells.inverted) {
     for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
     report.flipped = true;
   }

@@ -6,6 +6,7 @@
 #include "algorithms/core/predicates.h"
 
 #include <algorithm>
+#include <cassert>
 #include <bit>
 #include <cmath>
 #include <limits>
@@ -264,9 +265,8 @@ bool may_intersect(const TriangleRecord& t, const TriangleRecord& u, const Mesh&
   }
 }
 
-}  // namespace
-
-std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& mesh) {
+/// The first intersecting pair, skipping pairs of one part when `part` is given (one label per triangle).
+std::optional<std::array<std::int32_t, 2>> find_intersecting_pair(const Mesh& mesh, const std::int32_t* part) {
   const std::size_t n = mesh.triangles.size();
   if (n < 2) return std::nullopt;
   std::vector<TriangleRecord> records(n);
@@ -376,6 +376,7 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
             if ((h | g) == kAllAxes) gather(begin_of(h), begin_of(h + 1), begin_of(g), begin_of(g + 1), h == g);
         for (auto [a, b] : candidates) {
           if (a > b) std::swap(a, b);  // the order every-pair testing uses (a degenerate pair may depend on it)
+          if (part != nullptr && part[a] == part[b]) continue;
           const TriangleRecord& ra = records[static_cast<std::size_t>(a)];
           const TriangleRecord& rb = records[static_cast<std::size_t>(b)];
           if (may_intersect(ra, rb, mesh) && may_intersect(rb, ra, mesh) && triangles_intersect(corners(ra), corners(rb)))
@@ -383,6 +384,18 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
         }
       }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& mesh) {
+  return find_intersecting_pair(mesh, nullptr);
+}
+
+std::optional<std::array<std::int32_t, 2>> find_intersection_between_parts(const Mesh& mesh,
+                                                                           std::span<const std::int32_t> part) {
+  assert(part.size() == mesh.triangles.size());
+  return find_intersecting_pair(mesh, part.data());
 }
 
 namespace {

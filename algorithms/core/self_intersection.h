@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <string_view>
 
 namespace shatter {
@@ -34,6 +35,12 @@ bool triangles_intersect(const std::array<Vec3, 3>& t, const std::array<Vec3, 3>
 /// The first pair of triangles of `mesh` (indices, smaller first, in the grid's order) that
 /// intersect (triangles_intersect), or nothing. O(#F) on a surface-like mesh.
 std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& mesh);
+
+/// The first pair of triangles of `mesh` from different parts (`part`: one label per triangle, for
+/// example its shell) that intersect, or nothing. Pairs within one part are not tested; the cost is
+/// that of find_self_intersection.
+std::optional<std::array<std::int32_t, 2>> find_intersection_between_parts(const Mesh& mesh,
+                                                                           std::span<const std::int32_t> part);
 
 /// How many clean verdicts check_no_self_intersection remembers.
 inline constexpr std::size_t kRememberedCleanMeshes = 64;

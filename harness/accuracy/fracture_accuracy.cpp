@@ -3,6 +3,7 @@
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 #include "algorithms/register_all.h"
 #include "harness/accuracy/fracture_replay.h"
+#include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
 
 #include <fmt/core.h>
@@ -64,6 +65,12 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
                {"area_error", m.area_error},
                {"all_closed", m.all_closed},
                {"min_fragment_volume", m.min_fragment_volume}};
+  // An invalid fracture has no accuracy: its failed checks are reported and it stays off the front.
+  const std::vector<std::string> failed = failed_fracture_checks(m);
+  if (!failed.empty()) {
+    p.figures["failed_checks"] = failed;
+    return p;
+  }
   Result<std::vector<Fragment>> exact = exact_replay(*s.fracturer, solid.mesh, params);
   if (!exact) {
     p.figures["failed"] = "exact replay: " + exact.error().message;

@@ -26,4 +26,9 @@ int fail_check(std::string_view message) {
   return exit_gate_failed;
 }
 
+int print_failed_checks(std::string_view subject, const std::vector<std::string>& failed) {
+  for (const std::string& check : failed) print_line("check failed", subject.empty() ? check : std::string(subject) + ": " + check);
+  return static_cast<int>(failed.size());
+}
+
 }  // namespace shatter::cli

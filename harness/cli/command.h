@@ -4,7 +4,9 @@
 
 #include <CLI/CLI.hpp>
 
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace shatter::cli {
 
@@ -17,6 +19,10 @@ int fail_input(std::string_view message);
 /// Prints "shatterbench: check failed: <message>" on stderr (one line) and returns exit_gate_failed:
 /// the command's own check found its result invalid, so nothing of it is reported as an answer.
 int fail_check(std::string_view message);
+
+/// Prints "shatterbench: check failed: <subject>: <check>" on stderr for every entry of `failed` (one
+/// line each; "<subject>: " left out when `subject` is empty) and returns the number of lines printed.
+int print_failed_checks(std::string_view subject, const std::vector<std::string>& failed);
 
 /// `shatterbench list`.
 void add_list_command(CLI::App& app, int& exit_code);

@@ -3,6 +3,7 @@
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
 #include "harness/output/output_targets.h"
+#include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "harness/results/fragment_writer.h"
 
@@ -74,7 +75,9 @@ int run_fracture(const FractureOptions& o) {
         {"min_fragment_volume", m.min_fragment_volume}}},
   };
   std::cout << out.dump(2) << '\n';
-  return exit_ok;
+  // The result is printed either way; a result its own figures call invalid is not a success.
+  const std::vector<std::string> failed = failed_fracture_checks(m);
+  return print_failed_checks(o.mesh, failed) > 0 ? exit_gate_failed : exit_ok;
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "harness/cases/case_library.h"
 #include "harness/cli/command.h"
+#include "harness/grid/cell_checks.h"
 #include "harness/grid/grid_runner.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
@@ -270,7 +271,10 @@ int run_grid_command(const GridCommandOptions& o) {
     std::cout << grid_to_markdown(*grid, prepared->spec.name) << std::flush;
   }
   // Instruction mode times are valgrind's, not the game's: the budget gate applies to time mode only.
-  const bool gate_failed = !instructions && !grid->passed();
+  // The result checks of the fractures (cell_checks.h) apply in both modes.
+  const bool checks_failed = std::any_of(grid->cells.begin(), grid->cells.end(),
+                                         [](const GridCell& cell) { return !failed_cell_checks(cell).empty(); });
+  const bool gate_failed = (!instructions && !grid->passed()) || checks_failed;
   if (o.update_baseline && gate_failed)
     std::fprintf(stderr, "shatterbench: baseline %s not updated: the budget gate failed\n", json_path.string().c_str());
   if (!json_path.empty() && !(o.update_baseline && gate_failed)) {
@@ -289,6 +293,8 @@ int run_grid_command(const GridCommandOptions& o) {
       JunitCase jc{fmt::format("cell {} x {}", cell.prefracture, cell.runtime), suite.name, cell.worst_frame_ms / 1000.0, {}};
       if (!cell.failed.empty())
         jc.failure = cell.failed;
+      else if (const std::vector<std::string> checks = failed_cell_checks(cell); !checks.empty())
+        jc.failure = "check failed: " + checks.front();
       else if (!instructions && !cell.within_budget)
         jc.failure = fmt::format("worst frame {:.3f} ms > budget {:g} ms", cell.worst_frame_ms, grid->budget_ms);
       else if (!instructions && !cell.within_latency_budget)
@@ -298,6 +304,8 @@ int run_grid_command(const GridCommandOptions& o) {
     if (Status s = write_file_atomically(o.junit, junit_xml({suite})); !s) return fail_input("--junit: " + s.error().message);
   }
   if (!gate_failed) return exit_ok;
+  for (const GridCell& cell : grid->cells)
+    print_failed_checks(fmt::format("cell {} x {}", cell.prefracture, cell.runtime), failed_cell_checks(cell));
   for (const GridCell& cell : grid->cells)
     if (!cell.failed.empty())
       std::fprintf(stderr, "shatterbench: gate failed: cell %d x %d: %s\n", cell.prefracture, cell.runtime,

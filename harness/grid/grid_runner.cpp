@@ -1,5 +1,7 @@
 #include "harness/grid/grid_runner.h"
 
+#include "harness/grid/cell_checks.h"
+
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/register_all.h"
 #include "harness/grid/calibration.h"
@@ -217,7 +219,9 @@ void add_cell_error(CellError& into, const CellError& other) {
 
 bool GridResult::passed() const {
   return std::all_of(cells.begin(), cells.end(),
-                     [](const GridCell& c) { return c.failed.empty() && c.within_budget && c.within_latency_budget; });
+                     [](const GridCell& c) {
+                       return c.failed.empty() && c.within_budget && c.within_latency_budget && failed_cell_checks(c).empty();
+                     });
 }
 
 Status check_grid_options(const Case& c, const GridOptions& o) {

@@ -151,7 +151,8 @@ struct GridResult {
   int shard_count = 1;                 ///< of how many
   double cell_timeout_s = 0.0;         ///< wall-time limit per cell, s (0: none)
 
-  /// True when every cell ran and is within the frame budget and the latency budget.
+  /// True when every cell ran, is within the frame budget and the latency budget, and its fractures
+  /// pass their result checks (cell_checks.h).
   [[nodiscard]] bool passed() const;
 };
 

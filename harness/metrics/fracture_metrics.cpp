@@ -2,12 +2,16 @@
 
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/random.h"
+#include "algorithms/core/shell_classification.h"
 #include "algorithms/core/winding_number.h"
+
+#include <fmt/core.h>
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace shatter {
@@ -22,10 +26,18 @@ double relative_error(double value, double reference) {
   return std::isfinite(error) ? error : std::numeric_limits<double>::max();
 }
 
-bool fragment_is_valid(const Fragment& fragment) {
+/// Why `fragment` is not a valid solid, or "" when it is: the rule every input solid passes
+/// (mesh_validation.h, shell_classification.h), except that a fragment may hold cavities.
+std::string fragment_problem(const Fragment& fragment) {
   const double volume = fragment.mass.volume;
-  return !fragment.mesh.empty() && all_finite(fragment.mesh) && is_closed_and_oriented(fragment.mesh) &&
-         std::isfinite(volume) && volume > 0.0;
+  if (fragment.mesh.empty()) return "empty";
+  if (!all_finite(fragment.mesh)) return "a non-finite coordinate";
+  if (!is_closed_and_oriented(fragment.mesh)) return "not closed and consistently oriented";
+  if (!std::isfinite(volume) || !(volume > 0.0)) return "volume " + fmt::format("{:.6g}", volume) + " is not positive";
+  const ShellClassification shells = classify_shells(fragment.mesh);
+  if (shells.verdict == SolidVerdict::invalid) return shells.reason;
+  if (shells.inverted) return "faces inward";
+  return {};
 }
 
 struct PartitionResult {
@@ -83,7 +95,12 @@ FractureMetrics fracture_metrics(const Mesh& input, const MassProperties& input_
     volume_sum += fragment.mass.volume;
     surface_sum += tagged_area(fragment.mesh, FaceTag::surface);
     min_volume = std::min(min_volume, fragment.mass.volume);
-    metrics.all_closed = metrics.all_closed && fragment_is_valid(fragment);
+    if (metrics.all_closed) {
+      const std::string problem = fragment_problem(fragment);
+      metrics.all_closed = problem.empty();
+      if (!problem.empty())
+        metrics.fragment_problem = "fragment " + std::to_string(&fragment - fragments.data()) + ": " + problem;
+    }
   }
   metrics.volume_error = relative_error(volume_sum, input_mass.volume);
   metrics.area_error = relative_error(surface_sum, surface_area(input));

@@ -14,6 +14,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 
 namespace shatter {
 
@@ -33,9 +34,13 @@ struct FractureMetrics {
   /// |sum V_i - V| / V (dimensionless). 0 when the input volume V is not positive (no reference);
   /// the largest finite double when a fragment volume is not finite.
   double volume_error = 0.0;
-  /// Every fragment is non-empty, finite, closed and consistently oriented, with positive volume
-  /// (true for an empty fragment list).
+  /// Every fragment is non-empty, finite, closed and consistently oriented, with positive volume,
+  /// and its shells form a solid (classify_shells: outward shells that neither cross nor nest with
+  /// one orientation; cavities allowed). True for an empty fragment list.
   bool all_closed = true;
+  /// Why the first invalid fragment fails all_closed ("fragment 3: not closed and consistently
+  /// oriented"), empty when all_closed.
+  std::string fragment_problem;
   /// Share of the sampled points inside the input (winding number rounding to k >= 1) that lie
   /// inside a number of fragments other than k, in [0, 1]; 0 when no point was sampled. For an
   /// ordinary solid k = 1: a point in zero or several fragments is an error. An input of overlapping

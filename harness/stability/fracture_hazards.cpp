@@ -215,6 +215,10 @@ HazardResult run_fracture_hazard(const FractureHazard& h, const std::string& alg
   options.partition_samples = limits.partition_samples;
   const FractureMetrics m = fracture_metrics(solid, mass_properties(solid), *first, h.params.fragments, options);
   r.worst_error = std::max(m.volume_error, m.partition_error);
+  if (!m.all_closed) {  // the shell rule every solid passes (fracture_metrics.h)
+    r.detail = m.fragment_problem;
+    return r;
+  }
   if (!(m.volume_error <= limits.volume_error)) {
     r.detail = "volume error " + std::to_string(m.volume_error);
     return r;

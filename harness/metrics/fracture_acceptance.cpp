@@ -1,0 +1,20 @@
+#include "harness/metrics/fracture_acceptance.h"
+
+#include <fmt/core.h>
+
+namespace shatter {
+
+std::vector<std::string> failed_fracture_checks(const FractureMetrics& m, const FractureAcceptance& acceptance) {
+  std::vector<std::string> failed;
+  if (m.fragment_count < 1) failed.emplace_back("fragments: no fragment");
+  if (!m.all_closed) failed.push_back("all_closed: " + (m.fragment_problem.empty() ? std::string("false") : m.fragment_problem));
+  // Negated comparisons: a NaN figure fails too.
+  if (!(m.volume_error <= acceptance.max_volume_error))
+    failed.push_back(fmt::format("volume_error {:.6g} > {:g}", m.volume_error, acceptance.max_volume_error));
+  if (!(m.partition_error <= acceptance.max_partition_error))
+    failed.push_back(fmt::format("partition_error {:.6g} > {:g} ({} samples)", m.partition_error,
+                                 acceptance.max_partition_error, m.partition_samples));
+  return failed;
+}
+
+}  // namespace shatter
