@@ -31,6 +31,18 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
+/// The run that ended with wait status `status`, its output read from (and then removed with) `out`
+/// and `err`.
+inline CliRun collect_run(int status, const std::filesystem::path& out, const std::filesystem::path& err) {
+  CliRun run;
+  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  run.out = slurp(out);
+  run.err = slurp(err);
+  std::filesystem::remove(out);
+  std::filesystem::remove(err);
+  return run;
+}
+
 /// Runs `shatterbench <args>` (args are passed to the shell as written).
 inline CliRun run_cli(const std::string& args) {
   static int counter = 0;
@@ -39,14 +51,7 @@ inline CliRun run_cli(const std::string& args) {
   const auto out = dir / ("out" + std::to_string(::getpid()) + "_" + std::to_string(counter));
   const auto err = dir / ("err" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
   const std::string cmd = std::string(SHATTER_CLI) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  CliRun run;
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = slurp(out);
-  run.err = slurp(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return run;
+  return collect_run(std::system(cmd.c_str()), out, err);
 }
 
 /// Starts `shatterbench` with `args` as its argument vector (no shell: any byte but NUL passes through
@@ -79,17 +84,11 @@ inline CliRun run_cli_argv(const std::vector<std::string>& args, const std::file
   const std::string tag = std::to_string(::getpid()) + "_argv" + std::to_string(counter++);
   const auto out = std::filesystem::absolute(dir / ("out" + tag));
   const auto err = std::filesystem::absolute(dir / ("err" + tag));
-  CliRun run;
   const pid_t pid = spawn_cli(args, cwd, out, err);
-  if (pid < 0) return run;
+  if (pid < 0) return {};
   int status = 0;
   ::waitpid(pid, &status, 0);
-  run.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  run.out = slurp(out);
-  run.err = slurp(err);
-  std::filesystem::remove(out);
-  std::filesystem::remove(err);
-  return run;
+  return collect_run(status, out, err);
 }
 
 /// Number of lines in `s` (a final line without newline counts).
