@@ -1,13 +1,14 @@
 #include "harness/report/report_inputs.h"
 
+#include "algorithms/core/bounded_read.h"
+#include "harness/limits.h"
+
 #include <nlohmann/json.hpp>
 
 #include <fmt/core.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace shatter {
 namespace {
@@ -141,13 +142,11 @@ ReportAccuracy read_accuracy(const Json& j, const std::string& file) {
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
   ReportInputs inputs;
   for (const std::string& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file + ": cannot read"};
-    std::stringstream buffer;
-    buffer << in.rdbuf();
+    const Result<std::string> text = read_file_bounded(file, kMaxResultsFileBytes, "results file");
+    if (!text) return text.error();
     Json j;
     try {
-      j = Json::parse(buffer.str());
+      j = Json::parse(*text);
     } catch (const Json::parse_error& e) {
       return Error{file + ": invalid JSON: " + e.what()};
     }

@@ -1,11 +1,12 @@
 #include "harness/results/grid_reader.h"
 
 #include "harness/results/grid_report.h"
+#include "harness/limits.h"
+
+#include "algorithms/core/bounded_read.h"
 
 #include <fmt/core.h>
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace shatter {
@@ -251,13 +252,11 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
 }
 
 Result<StoredGrid> read_grid_results(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return Error{path.string() + ": cannot be read"};
-  std::stringstream buffer;
-  buffer << in.rdbuf();
+  const Result<std::string> text = read_file_bounded(path, kMaxResultsFileBytes, "results file");
+  if (!text) return text.error();
   Json j;
   try {
-    j = Json::parse(buffer.str());
+    j = Json::parse(*text);
   } catch (const Json::parse_error& e) {
     return Error{path.string() + ": invalid JSON: " + e.what()};
   }

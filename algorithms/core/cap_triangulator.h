@@ -2,7 +2,8 @@
 /// Constrained Delaunay triangulation of the cut polygons of a slice (the "cap"), after Sloan (1993):
 /// incremental Delaunay insertion with exact predicates, constraint recovery by edge flips, and the
 /// inside selected by winding number across the constraints. Loops may be many, nested, and may have
-/// holes; loops may touch at vertices.
+/// holes; loops may touch at vertices. Shared by the cut caps of the fracturers, the profiles of
+/// prism meshes and the polygon faces of the mesh readers (polygon_triangulation.h).
 
 #include "algorithms/core/mesh.h"
 

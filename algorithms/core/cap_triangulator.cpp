@@ -9,7 +9,7 @@
 /// of triangles with positive winding number, found by a flood fill from the super triangle.
 /// All buffers live in a thread-local workspace reused across calls.
 
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 
 #include "algorithms/core/predicates.h"
 
