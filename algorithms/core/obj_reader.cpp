@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <array>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -21,9 +22,9 @@ namespace shatter {
 namespace {
 
 /// Statements that carry nothing a solid needs: read past without a check of their content.
-constexpr std::array<std::string_view, 16> kSkipped = {"vt",     "vn",        "vp",        "s",         "mtllib", "usemtl",
-                                                       "l",      "p",         "mg",        "lod",       "bevel",  "c_interp",
-                                                       "d_interp", "shadow_obj", "trace_obj", "maplib"};
+constexpr std::array<std::string_view, 19> kSkipped = {
+    "vt",    "vn",       "vp",       "s",          "mtllib",    "usemtl", "usemap", "maplib", "l",     "p",
+    "mg",    "lod",      "bevel",    "c_interp",   "d_interp",  "shadow_obj", "trace_obj", "ctech", "stech"};
 
 /// Free-form geometry statements: they describe surfaces this reader cannot triangulate.
 constexpr std::array<std::string_view, 13> kFreeForm = {"cstype", "deg",  "bmat", "step", "curv", "curv2", "surf",

@@ -1,5 +1,6 @@
 #include "harness/cases/case_loader.h"
 
+#include "algorithms/core/bounded_read.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cases/json_reader.h"
@@ -8,8 +9,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <set>
 
 namespace shatter {

@@ -193,9 +193,9 @@ TEST_CASE("no crash: coordinates outside the representable range are refused by 
     double scale, offset;
   };
   // 1e80 and 1e100 crashed cgal-clip with SIGFPE, 1e150 with SIGSEGV; 1e100 and 1e308 overflowed the
-  // mass properties; 2e9 is just past the range, 1e-7 below the smallest extent.
+  // mass properties; 2.5e9 puts the corners just past the range, 1e-7 below the smallest extent.
   const std::vector<Far> far = {{"1e80", 1e80, 0.0},   {"1e100", 1e100, 0.0}, {"1e150", 1e150, 0.0},
-                                {"1e308", 1e308, 0.0}, {"2e9", 2e9, 0.0},     {"offset", 1.0, 3e9},
+                                {"1e308", 1e308, 0.0}, {"2.5e9", 2.5e9, 0.0}, {"offset", 1.0, 3e9},
                                 {"tiny", 1e-7, 0.0}};
   for (const Far& f : far) {
     const std::string mesh = cube_off(dir / (f.name + ".off"), f.scale, f.offset).string();
@@ -303,9 +303,12 @@ TEST_CASE("no crash: polygon faces are triangulated into n - 2 triangles that co
   for (std::size_t i = 0; i < big.size(); ++i) {
     std::snprintf(line, sizeof line, "%.17g %.17g 0\n", big[i].x(), big[i].y());
     off += line;
-    obj += std::string("v ") + line;
-    face += " " + std::to_string(i);
-    obj_face += " " + std::to_string(i + 1);
+    obj += "v ";
+    obj += line;
+    face += ' ';
+    face += std::to_string(i);
+    obj_face += ' ';
+    obj_face += std::to_string(i + 1);
   }
   const Result<Mesh> from_off = read_off(write(dir / "star.off", off + face + "\n"));
   REQUIRE(from_off.ok());
