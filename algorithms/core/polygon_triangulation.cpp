@@ -54,7 +54,7 @@ Status triangulate_polygon(const std::vector<Vec3>& vertices, std::span<const st
     const auto a = static_cast<std::int32_t>(i), b = static_cast<std::int32_t>((i + 1) % m);
     edges[i] = sign > 0 ? CapEdge{a, b} : CapEdge{b, a};
   }
-  const CapTriangulation cdt = triangulate_cap(pts, edges);
+  const CapTriangulation cdt = triangulate_cap(pts, edges, InsertionOrder::randomized_rounds);
   if (!cdt.ok) return Error{"polygon crosses itself (" + cdt.error + ")"};
   if (cdt.triangles.empty()) {
     fan(poly, out);
