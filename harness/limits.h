@@ -46,6 +46,12 @@ inline constexpr std::uint64_t kMaxCaseFileBytes = 16ULL << 20;
 /// allow 255 bytes for one, less the `.json` and the `.NAME.partial-XXXXXXXX` of an atomic write.
 inline constexpr std::size_t kMaxCaseNameBytes = 200;
 
+/// Size of a results file read by compare, merge and report (grid and accuracy JSON), and of an
+/// instruction dump read back from valgrind: the reader holds the text and its JSON tree (about ten
+/// times the text). A grid at kMaxRecordedFrames writes about 400 MB of JSON; a file past 1 GiB is
+/// not one this tool wrote (a link to /dev/zero, a wrong file) and is refused before it is held.
+inline constexpr std::uint64_t kMaxResultsFileBytes = 1ULL << 30;
+
 /// Corners of a prism's profile, outline and holes together: a wall's elevation has tens; each corner
 /// makes about four triangles (front, back and the side quad), 400,000 at the limit.
 inline constexpr int kMaxPrismCorners = 100'000;

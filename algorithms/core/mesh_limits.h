@@ -22,9 +22,10 @@ inline constexpr std::int64_t kMaxMeshVertices = 10'000'000;
 /// and vertex limits written with full double precision takes about 1 GB.
 inline constexpr std::uint64_t kMaxMeshFileBytes = 2ULL << 30;
 
-/// Corners of one non-convex polygon face: ear clipping is quadratic in them (convex polygons of any
-/// size are fanned and count only against kMaxMeshTriangles).
-inline constexpr std::int64_t kMaxEarClippingCorners = 2000;
+/// Corners of one polygon face (OFF or OBJ). The triangulation is O(n log n) (polygon_triangulation.h);
+/// the limit bounds the time and scratch memory one face line can ask for (docs/limits.md gives the
+/// measured time at the limit).
+inline constexpr std::int64_t kMaxPolygonCorners = 1'000'000;
 
 /// The limits one read applies; the defaults are the documented ones (tests pass smaller ones).
 struct MeshReadLimits {

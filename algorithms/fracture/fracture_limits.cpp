@@ -1,28 +1,37 @@
 #include "algorithms/fracture/fracture_limits.h"
 
+#include "algorithms/core/representable_range.h"
+
 #include <cmath>
 #include <string>
 
 namespace shatter {
 
-Status check_fracture_params(const FractureParams& params) {
-  if (params.fragments < 1 || params.fragments > kMaxFragments)
-    return Error{"fragments must be between 1 and " + std::to_string(kMaxFragments) + ", got " +
-                 std::to_string(params.fragments)};
+Status check_fracture_solid(const Mesh& solid, std::string_view algorithm) {
+  return check_coordinate_range(solid, std::string(algorithm) + ": solid");
+}
+
+Status check_fracture_params(const Mesh& solid, const FractureParams& params, std::string_view algorithm,
+                             int max_fragments) {
+  if (params.fragments < 1 || params.fragments > max_fragments)
+    return Error{std::string(algorithm) + ": fragments must be between 1 and " + std::to_string(max_fragments) +
+                 ", got " + std::to_string(params.fragments)};
   if (params.impact) {
     const Impact& i = *params.impact;
-    if (!i.point.allFinite() || !i.direction.allFinite() || !std::isfinite(i.impulse) ||
-        !std::isfinite(i.radius) || i.radius < 0)
-      return Error{"impact must have a finite point, direction and impulse and a radius >= 0"};
+    if (!within_coordinate_range(i.point) || !i.direction.allFinite() || !std::isfinite(i.impulse) ||
+        !(i.radius >= 0.0 && i.radius <= kMaxCoordinate))
+      return Error{std::string(algorithm) + ": the impact needs a point within +-1e9 m, a finite direction and "
+                   "impulse and a radius in [0, 1e9] m"};
   }
-  return {};
+  return check_fracture_solid(solid, algorithm);
 }
 
 Status check_planes(std::span<const Plane> planes) {
   for (std::size_t i = 0; i < planes.size(); ++i) {
     const Plane& p = planes[i];
-    if (!p.point.allFinite() || !p.normal.allFinite() || p.normal.squaredNorm() == 0.0)
-      return Error{"plane " + std::to_string(i) + " needs a finite point and a finite non-zero normal"};
+    if (!within_coordinate_range(p.point) || !within_coordinate_range(p.normal) || p.normal.squaredNorm() == 0.0)
+      return Error{"plane " + std::to_string(i) +
+                   " needs a point within +-1e9 m and a non-zero normal with components within +-1e9"};
   }
   return {};
 }

@@ -1,6 +1,9 @@
 #pragma once
-/// Checks of fracture parameters shared by every fracturer, with the documented limits.
+/// Checks of fracture inputs shared by every fracturer, with the documented limits. Every entry point
+/// of a fracturer calls one of them before any geometry is computed, so an input an algorithm cannot
+/// represent is an Error, never a crash (docs/limits.md, docs/stability.md).
 
+#include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/fracturer.h"
 
@@ -8,13 +11,21 @@
 
 namespace shatter {
 
-/// The largest fragment count a fracturer accepts (memory grows linearly with it).
+/// The largest fragment count a fracturer accepts (memory grows linearly with it). A fracturer may
+/// accept fewer (voronoi_fracturer.h, cgal_clip_fracturer.h); docs/limits.md gives the time at each.
 inline constexpr int kMaxFragments = 100000;
 
-/// Error unless 1 <= fragments <= kMaxFragments and the impact (if any) is finite.
-Status check_fracture_params(const FractureParams& params);
+/// Error unless every vertex of `solid` is within the representable coordinate range
+/// (representable_range.h); `algorithm` names the fracturer in the message.
+Status check_fracture_solid(const Mesh& solid, std::string_view algorithm);
 
-/// Error unless every plane is finite with a non-zero normal.
+/// check_fracture_solid, and 1 <= fragments <= `max_fragments` and an impact (if any) with a point in
+/// the coordinate range, a finite direction and impulse and a radius in [0, kMaxCoordinate].
+Status check_fracture_params(const Mesh& solid, const FractureParams& params, std::string_view algorithm,
+                             int max_fragments = kMaxFragments);
+
+/// Error unless every plane has a point in the coordinate range and a non-zero normal whose
+/// components are within it too.
 Status check_planes(std::span<const Plane> planes);
 
 }  // namespace shatter

@@ -2,13 +2,14 @@
 
 #include "harness/cases/case_loader.h"
 #include "harness/cases/json_reader.h"
+#include "harness/limits.h"
+
+#include "algorithms/core/bounded_read.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
-#include <iterator>
 #include <map>
 
 namespace shatter {
@@ -30,15 +31,28 @@ std::vector<fs::path> candidate_dirs() {
   return dirs;
 }
 
-/// The "description" of a case file, read without checking the rest of the file.
-std::string read_description(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  Result<nlohmann::json> json = parse_json(text, path.string());
+/// The "description" of a case file as written, or why it cannot be read.
+std::string read_description_text(const fs::path& path) {
+  const Result<std::string> text = read_file_bounded(path, kMaxCaseFileBytes, "case file");
+  if (!text) return "invalid case file: " + text.error().message;
+  Result<nlohmann::json> json = parse_json(*text, path.string());
   if (!json) return "invalid case file: " + json.error().message;
   if (!json->is_object()) return "invalid case file: not a JSON object";
   const auto it = json->find("description");
   return it != json->end() && it->is_string() ? it->get<std::string>() : std::string();
+}
+
+/// Characters of a description that `list` prints: one line of a table, not the file's content.
+constexpr std::size_t kMaxListedDescription = 200;
+
+/// The "description" of a case file, read without checking the rest of the file, as one short line
+/// (control characters escaped, cut at kMaxListedDescription characters).
+std::string read_description(const fs::path& path) {
+  std::string text = escape_control_characters(read_description_text(path));
+  if (text.size() <= kMaxListedDescription) return text;
+  std::size_t cut = kMaxListedDescription;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+  return text.substr(0, cut) + "...";
 }
 
 /// True when `arg` reads as a file path rather than a case name.

@@ -1,5 +1,6 @@
 #include "harness/cases/case_loader.h"
 
+#include "algorithms/core/bounded_read.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cases/json_reader.h"
@@ -9,8 +10,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <set>
 
 namespace shatter {
@@ -339,14 +338,9 @@ Result<Case> parse_case(std::string_view text, const fs::path& source) {
 Result<Case> load_case(const fs::path& path) {
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) return Error{fmt::format("{}: case file not found", path.string())};
-  if (const std::uintmax_t size = fs::file_size(path, ec); !ec && size > kMaxCaseFileBytes)
-    return Error{
-        fmt::format("{}: {} bytes exceed the limit of {} bytes per case file", path.string(), size, kMaxCaseFileBytes)};
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return Error{fmt::format("{}: cannot open the case file", path.string())};
-  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) return Error{fmt::format("{}: cannot read the case file", path.string())};
-  return parse_case(text, path);
+  const Result<std::string> text = read_file_bounded(path, kMaxCaseFileBytes, "case file");
+  if (!text) return Error{escape_control_characters(text.error().message)};
+  return parse_case(*text, path);
 }
 
 }  // namespace shatter

@@ -21,7 +21,9 @@ struct Solid {
 /// Reads `path` (.off or .obj), validates it as a solid and measures it. Errors name the file.
 Result<Solid> load_solid(const std::filesystem::path& path);
 
-/// Validates and measures an in-memory mesh; `what` names it in errors.
+/// Validates and measures an in-memory mesh; `what` names it in errors. Every input solid of the
+/// harness (mesh files and case meshes alike) passes here: a mesh outside the representable range
+/// (representable_range.h) is refused before it is measured.
 Result<Solid> make_solid(Mesh mesh, const std::string& what);
 
 }  // namespace shatter

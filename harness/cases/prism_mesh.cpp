@@ -1,6 +1,6 @@
 #include "harness/cases/prism_mesh.h"
 
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 #include "harness/cases/physical_range.h"
 #include "harness/limits.h"
 

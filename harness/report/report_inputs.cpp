@@ -1,5 +1,7 @@
 #include "harness/report/report_inputs.h"
 
+#include "algorithms/core/bounded_read.h"
+#include "harness/limits.h"
 #include "harness/results/json_finite.h"
 
 #include <nlohmann/json.hpp>
@@ -7,9 +9,7 @@
 #include <fmt/core.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
-#include <sstream>
 
 namespace shatter {
 namespace {
@@ -143,11 +143,9 @@ ReportAccuracy read_accuracy(const Json& j, const std::string& file) {
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
   ReportInputs inputs;
   for (const std::string& file : files) {
-    std::ifstream in(file, std::ios::binary);
-    if (!in) return Error{file + ": cannot read"};
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    Result<nlohmann::ordered_json> parsed = parse_results_json(buffer.str(), file);
+    const Result<std::string> text = read_file_bounded(file, kMaxResultsFileBytes, "results file");
+    if (!text) return text.error();
+    Result<nlohmann::ordered_json> parsed = parse_results_json(*text, file);
     if (!parsed) return parsed.error();
     const Json j = Json(*parsed);
     if (const std::optional<std::string> key = first_non_finite(j))

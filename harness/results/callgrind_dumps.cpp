@@ -1,10 +1,16 @@
 #include "harness/results/callgrind_dumps.h"
 
+#include "algorithms/core/bounded_read.h"
+#include "algorithms/core/mesh_text.h"
+#include "harness/limits.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <fstream>
+#include <cstdint>
+#include <limits>
 #include <sstream>
+#include <string_view>
 
 namespace shatter {
 namespace {
@@ -28,24 +34,40 @@ Result<std::vector<InstructionDump>> read_instruction_dumps(const std::filesyste
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
     const std::string name = entry.path().filename().string();
     if (name.rfind(prefix, 0) != 0) continue;
-    std::ifstream in(entry.path());
-    if (!in) return Error{entry.path().string() + ": cannot be read"};
-    std::string line, label;
+    const Result<std::string> text = read_file_bounded(entry.path(), kMaxResultsFileBytes, "instruction dump");
+    if (!text) return text.error();
+    std::string label;
     double count = -1.0;
-    while (std::getline(in, line)) {
-      if (line.rfind(kTrigger, 0) == 0) label = line.substr(kTrigger.size());
-      if (line.rfind("totals: ", 0) == 0 || line.rfind("summary: ", 0) == 0)
-        count = std::stod(line.substr(line.find(' ') + 1));
+    for (std::string_view rest = *text; !rest.empty();) {  // "\n", "\r\n" and "\r" end a line
+      const std::size_t end = rest.find_first_of("\r\n");
+      const std::string_view line = rest.substr(0, end);
+      rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+      if (line.starts_with(kTrigger)) label = std::string(line.substr(kTrigger.size()));
+      if (line.starts_with("totals: ") || line.starts_with("summary: ")) {
+        std::string_view number = line.substr(line.find(' ') + 1);
+        number = number.substr(0, number.find(' '));
+        const Result<double> x = parse_finite_double(number);
+        if (!x || *x < 0.0) return Error{entry.path().string() + ": malformed instruction count"};
+        count = *x;
+      }
     }
     if (label.rfind("shatterbench;", 0) != 0) continue;  // e.g. the final dump at exit
     if (count < 0.0) return Error{entry.path().string() + ": a mark without an instruction count"};
     const std::vector<std::string> f = split(label, ';');
     if (f.size() != 6) return Error{entry.path().string() + ": malformed mark \"" + label + "\""};
+    int numbers[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) {
+      const Result<std::int64_t> n = parse_integer(f[static_cast<std::size_t>(i + 1)]);
+      const std::int64_t lowest = i == 3 ? -1 : 0;  // frame -1: work before the first frame (setup)
+      if (!n || *n < lowest || *n > std::numeric_limits<int>::max())
+        return Error{entry.path().string() + ": malformed mark \"" + label + "\""};
+      numbers[i] = static_cast<int>(*n);
+    }
     InstructionDump d;
-    d.prefracture = std::stoi(f[1]);
-    d.runtime = std::stoi(f[2]);
-    d.repetition = std::stoi(f[3]);
-    d.frame = std::stoi(f[4]);
+    d.prefracture = numbers[0];
+    d.runtime = numbers[1];
+    d.repetition = numbers[2];
+    d.frame = numbers[3];
     d.stage = f[5];
     d.instructions = count;
     out.push_back(std::move(d));

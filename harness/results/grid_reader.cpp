@@ -1,14 +1,14 @@
 #include "harness/results/grid_reader.h"
 
 #include "harness/results/grid_report.h"
+#include "algorithms/core/bounded_read.h"
+#include "harness/limits.h"
 #include "harness/results/json_finite.h"
 
 #include <fmt/core.h>
 
 #include <climits>
 #include <cstdint>
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 namespace shatter {
@@ -268,11 +268,9 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
 }
 
 Result<StoredGrid> read_grid_results(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) return Error{path.string() + ": cannot be read"};
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  Result<Json> j = parse_results_json(buffer.str(), path.string());
+  const Result<std::string> text = read_file_bounded(path, kMaxResultsFileBytes, "results file");
+  if (!text) return text.error();
+  Result<Json> j = parse_results_json(*text, path.string());
   if (!j) return j.error();
   Result<StoredGrid> out = grid_results_from_json(*j, path.string());
   if (out) out->path = path;

@@ -2,7 +2,7 @@
 // present with the region on their left, no overlap (each directed edge used at most once), CCW
 // triangles, and the empty-circle property on unconstrained interior edges.
 
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 
 #include "algorithms/core/predicates.h"
 

@@ -3,7 +3,7 @@
 
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_validation.h"
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "harness/cases/case_loader.h"
 

@@ -105,7 +105,7 @@ Status check_reference_size(std::size_t count, const char* what) {
 }
 
 Result<std::vector<Fragment>> CgalClipFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
-  if (Status s = check_fracture_params(params); !s) return s.error();
+  if (Status s = check_fracture_params(solid, params, "cgal-clip"); !s) return s.error();
   if (Status s = check_reference_size(static_cast<std::size_t>(params.fragments), "fragments"); !s) return s.error();
   return run(solid, [&](const ExactClipKernel& kernel, std::vector<ExactClipKernel::Piece> start) {
     return slice_recursively(kernel, std::move(start), params.fragments, params.seed);
@@ -114,6 +114,7 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture(const Mesh& solid, con
 
 Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_planes(const Mesh& solid,
                                                                     std::span<const Plane> planes) const {
+  if (Status s = check_fracture_solid(solid, "cgal-clip"); !s) return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
   // n planes can make up to about n + 1 pieces of a convex solid, more of a non-convex one.
   if (Status s = check_reference_size(planes.size(), "planes"); !s) return s.error();

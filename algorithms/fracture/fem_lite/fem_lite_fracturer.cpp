@@ -15,7 +15,7 @@
 namespace shatter {
 
 Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params) const {
-  if (Status s = check_fracture_params(params); !s) return s.error();
+  if (Status s = check_fracture_params(solid, params, "fem-lite"); !s) return s.error();
   if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
   // A surface that crosses itself makes cut outlines that cross: no valid partition, as for voronoi.
   if (Status s = check_no_self_intersection(solid, "fem-lite"); !s) return s.error();

@@ -4,7 +4,7 @@
 /// side of the solid) is closed along the cap. Shared by the plane slicer and the Voronoi cell clipper.
 
 #include "algorithms/core/mesh.h"
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 
 #include <absl/container/flat_hash_map.h>
 

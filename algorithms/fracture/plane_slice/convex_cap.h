@@ -12,7 +12,7 @@
 /// lose exactness) is declined, and the caller triangulates the cap with triangulate_cap.
 
 #include "algorithms/core/mesh.h"
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 
 #include <span>
 #include <vector>

@@ -16,7 +16,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/plane_slice/cap_closure.h"
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 
 #include <cstdint>
 #include <string>

@@ -66,13 +66,14 @@ std::vector<Fragment> to_fragments(std::vector<SliceKernel::Piece>&& pieces) {
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
                                                             const FractureParams& params) const {
-  if (Status s = check_fracture_params(params); !s) return s.error();
+  if (Status s = check_fracture_params(solid, params, "plane-slice"); !s) return s.error();
   const SliceKernel kernel;
   return to_fragments(slice_recursively(kernel, start_pieces(solid), params.fragments, params.seed));
 }
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
                                                                       int max_fragments) const {
+  if (Status s = check_fracture_solid(solid, "plane-slice"); !s) return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
   const SliceKernel kernel;
   auto pieces =

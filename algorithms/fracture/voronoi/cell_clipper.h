@@ -32,7 +32,7 @@
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
-#include "algorithms/fracture/plane_slice/cap_triangulator.h"
+#include "algorithms/core/cap_triangulator.h"
 #include "algorithms/fracture/voronoi/cell_polytope.h"
 #include "algorithms/fracture/voronoi/point_in_mesh.h"
 

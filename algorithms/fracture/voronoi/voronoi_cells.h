@@ -35,7 +35,9 @@ struct VoronoiCell {
 };
 
 /// Cells of `sites` (#S distinct finite points, m) clipped to `box` (m), each box and reach inflated
-/// by `margin` (m). O(#S^2 log #S) time for the neighbour orders, O(#S) memory per cell at most.
+/// by `margin` (m). The neighbours come from a uniform grid over the sites: time about linear in #S for
+/// sites spread through the box (each cell reads the buckets within twice its reach), O(#S^2 log #S) at
+/// worst; the result is the same as with a full sort of the other sites.
 std::vector<VoronoiCell> voronoi_cells(std::span<const Vec3> sites, const Aabb& box, double margin);
 
 }  // namespace shatter

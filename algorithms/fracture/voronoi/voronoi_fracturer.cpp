@@ -19,6 +19,7 @@
 
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_components.h"
+#include "algorithms/core/representable_range.h"
 #include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
@@ -216,7 +217,8 @@ Status check_sites(std::span<const Vec3> sites) {
                  std::to_string(sites.size())};
   std::vector<Vec3> sorted(sites.begin(), sites.end());
   for (std::size_t k = 0; k < sorted.size(); ++k)
-    if (!sorted[k].allFinite()) return Error{"voronoi: site " + std::to_string(k) + " is not finite"};
+    if (!within_coordinate_range(sorted[k]))
+      return Error{"voronoi: site " + std::to_string(k) + " is not within +-1e9 m (the representable range)"};
   std::sort(sorted.begin(), sorted.end(), [](const Vec3& a, const Vec3& b) {
     return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
   });
@@ -237,7 +239,7 @@ Status check_settings(const VoronoiSettings& s) {
 }  // namespace
 
 Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
-  if (Status s = check_fracture_params(params); !s) return s.error();
+  if (Status s = check_fracture_params(solid, params, "voronoi"); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
   if (Status s = check_no_self_intersection(solid, "voronoi"); !s) return s.error();
   if (solid.empty()) return std::vector<Fragment>{};
@@ -250,6 +252,7 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, cons
 
 Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& solid,
                                                                     std::span<const Vec3> sites) const {
+  if (Status s = check_fracture_solid(solid, "voronoi"); !s) return s.error();
   if (Status s = check_sites(sites); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
   if (Status s = check_no_self_intersection(solid, "voronoi"); !s) return s.error();

@@ -2,7 +2,8 @@
 /// Constrained Delaunay triangulation of the cut polygons of a slice (the "cap"), after Sloan (1993):
 /// incremental Delaunay insertion with exact predicates, constraint recovery by edge flips, and the
 /// inside selected by winding number across the constraints. Loops may be many, nested, and may have
-/// holes; loops may touch at vertices.
+/// holes; loops may touch at vertices. Shared by the cut caps of the fracturers, the profiles of
+/// prism meshes and the polygon faces of the mesh readers (polygon_triangulation.h).
 
 #include "algorithms/core/mesh.h"
 
@@ -26,10 +27,18 @@ struct CapTriangulation {
   std::string error;     ///< why, when !ok
 };
 
+/// The order in which the points enter the Delaunay triangulation.
+enum class InsertionOrder {
+  bins,               ///< Sloan's bin order: fastest for the scattered points of a cut cap
+  randomized_rounds,  ///< shuffled rounds of doubling size, each in bin order: expected O(n log n) for any
+                      ///< points, nearly cocircular ones included (the polygon faces of mesh files)
+};
+
 /// Triangulates the region to the left of the directed edges. `edges` form closed loops (every point
 /// has as many outgoing as incoming edges); outer loops run counter-clockwise, holes clockwise.
 /// Points with identical coordinates are treated as one point; points no edge uses are ignored.
 /// Pairs of opposite edges on the same segment cancel.
-CapTriangulation triangulate_cap(std::span<const Vec2> points, std::span<const CapEdge> edges);
+CapTriangulation triangulate_cap(std::span<const Vec2> points, std::span<const CapEdge> edges,
+                                 InsertionOrder order = InsertionOrder::bins);
 
 }  // namespace shatter

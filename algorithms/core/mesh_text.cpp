@@ -1,0 +1,74 @@
+#include "algorithms/core/mesh_text.h"
+
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+namespace shatter {
+
+bool TokenLines::next() {
+  while (pos_ < text_.size()) {
+    std::size_t end = text_.find_first_of("\r\n", pos_);
+    if (end == std::string_view::npos) end = text_.size();
+    std::string_view line = text_.substr(pos_, end - pos_);
+    pos_ = end + 1;
+    if (end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ++pos_;  // "\r\n" is one end
+    ++line_;
+    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
+    tokens_.clear();
+    std::size_t i = 0;
+    while (i < line.size()) {
+      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      const std::size_t start = i;
+      while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+      if (i > start) tokens_.push_back(line.substr(start, i - start));
+    }
+    if (!tokens_.empty()) return true;
+  }
+  tokens_.clear();
+  return false;
+}
+
+namespace {
+
+/// The token quoted for a message, cut short when long (a message stays one short line).
+std::string quoted(std::string_view token) {
+  std::string out = "'";
+  for (const char c : token.substr(0, 40)) out += std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  if (token.size() > 40) out += "...";
+  return out + "'";
+}
+
+}  // namespace
+
+Result<double> parse_finite_double(std::string_view token) {
+  std::string_view s = token;
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  if (s.empty() || s.front() == '+') return Error{"non-numeric token " + quoted(token)};
+  double value = 0.0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (end != s.data() + s.size() || ec == std::errc::invalid_argument) return Error{"non-numeric token " + quoted(token)};
+  if (ec == std::errc::result_out_of_range) {
+    // Overflow or underflow: strtod says which (HUGE_VAL for overflow, the rounding otherwise).
+    value = std::strtod(std::string(s).c_str(), nullptr);
+    if (!std::isfinite(value)) return Error{"number " + quoted(token) + " is outside the range of a double"};
+    return value;
+  }
+  if (!std::isfinite(value)) return Error{"non-finite number " + quoted(token)};
+  return value;
+}
+
+Result<std::int64_t> parse_integer(std::string_view token) {
+  std::string_view s = token;
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  std::int64_t value = 0;
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), value);
+  if (ec == std::errc::result_out_of_range) return Error{"integer " + quoted(token) + " is outside the range of 64 bits"};
+  if (s.empty() || s.front() == '+' || ec != std::errc{} || end != s.data() + s.size())
+    return Error{"non-numeric token " + quoted(token)};
+  return value;
+}
+
+}  // namespace shatter
