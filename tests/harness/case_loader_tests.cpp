@@ -19,6 +19,8 @@
 #error "tests need SHATTER_SOURCE_DIR (a compile definition of the test target)"
 #endif
 
+#include <unistd.h>
+
 using namespace shatter;
 namespace fs = std::filesystem;
 
@@ -26,9 +28,9 @@ namespace {
 
 const std::string box_mesh = R"("mesh": {"box": {"size": [1, 1, 1]}})";
 
-/// A fresh folder for this test's files.
+/// A fresh folder for this test's files (per process: ctest runs test cases side by side).
 fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "shatter_case_tests" / name;
+  const fs::path dir = fs::temp_directory_path() / ("shatter_case_tests_" + std::to_string(::getpid())) / name;
   fs::remove_all(dir);
   fs::create_directories(dir);
   return dir;
