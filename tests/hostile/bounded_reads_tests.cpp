@@ -2,6 +2,7 @@
 // /dev/zero) and whatever its line endings, a reader holds no more than the documented limit before
 // it refuses, and a number in a mesh file is read whole or refused with the file and the line.
 
+#include "tests/hostile/hostile_support.h"
 #include "algorithms/core/bounded_read.h"
 #include "algorithms/core/mesh_io.h"
 #include "tests/support/cli_runner.h"
@@ -27,24 +28,14 @@ using shatter::test::line_count;
 using shatter::test::run_cli_argv;
 
 namespace fs = std::filesystem;
+using shatter::test::hostile_scratch;
+using shatter::test::put_file;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shatter_hostile_reads_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-fs::path write(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
-
 /// A sparse file of `bytes` bytes: no disk blocks, but its size says it all.
 fs::path sparse(const fs::path& path, std::uintmax_t bytes) {
-  write(path, "{");
+  put_file(path, "{");
   fs::resize_file(path, bytes);
   return path;
 }
@@ -66,15 +57,15 @@ std::string error_of(const Result<Mesh>& mesh) { return mesh.ok() ? std::string(
 }  // namespace
 
 TEST_CASE("reads: one bounded read refuses devices, folders and files past the limit", "[hostile][reads]") {
-  const fs::path dir = scratch("bounded");
-  const fs::path exact = write(dir / "exact.txt", std::string(100, 'x'));
+  const fs::path dir = hostile_scratch("bounded");
+  const fs::path exact = put_file(dir / "exact.txt", std::string(100, 'x'));
   const Result<std::string> at_limit = read_file_bounded(exact, 100, "test file");
   REQUIRE(at_limit.ok());
   CHECK(at_limit->size() == 100);
   const Result<std::string> over = read_file_bounded(exact, 99, "test file");
   REQUIRE_FALSE(over.ok());
   CHECK(over.error().message == exact.string() + ": larger than the limit of 99 bytes per test file (the file has 100 bytes)");
-  CHECK(read_file_bounded(write(dir / "empty.txt", ""), 0, "test file").ok());
+  CHECK(read_file_bounded(put_file(dir / "empty.txt", ""), 0, "test file").ok());
 
   fs::create_symlink("/dev/zero", dir / "zero");
   fs::create_symlink("/dev/urandom", dir / "random");
@@ -123,7 +114,7 @@ TEST_CASE("reads: one bounded read refuses devices, folders and files past the l
 }
 
 TEST_CASE("reads: results files of compare, merge and report are bounded", "[hostile][reads][cli]") {
-  const fs::path dir = scratch("results");
+  const fs::path dir = hostile_scratch("results");
   fs::create_symlink("/dev/zero", dir / "zero.json");
   const std::string zero = (dir / "zero.json").string();
   const std::string giant = sparse(dir / "giant.json", (1ULL << 30) + 1).string();
@@ -143,14 +134,14 @@ TEST_CASE("reads: results files of compare, merge and report are bounded", "[hos
 }
 
 TEST_CASE("reads: case files are bounded wherever they are read", "[hostile][reads][cli]") {
-  const fs::path dir = scratch("cases");
+  const fs::path dir = hostile_scratch("cases");
   const fs::path case_dir = dir / "cases";
   fs::create_directories(case_dir);
   const std::string huge = sparse(case_dir / "huge.json", 100ULL << 20).string();
   const std::string over = sparse(case_dir / "over.json", (16ULL << 20) + 1).string();
   fs::create_symlink("/dev/zero", case_dir / "zero.json");
-  write(case_dir / "long.json", "{\"description\": \"" + std::string(1 << 20, 'd') + "\\nsecond line\", \"mesh\": {}}");
-  write(case_dir / "fine.json", R"({"description": "a short one", "mesh": {"box": {"size": [1, 1, 1]}}})");
+  put_file(case_dir / "long.json", "{\"description\": \"" + std::string(1 << 20, 'd') + "\\nsecond line\", \"mesh\": {}}");
+  put_file(case_dir / "fine.json", R"({"description": "a short one", "mesh": {"box": {"size": [1, 1, 1]}}})");
 
   for (const std::string& bad : {huge, over}) {
     require_refused({"grid", "--case", bad, "--json", (dir / "out.json").string()},
@@ -179,7 +170,7 @@ TEST_CASE("reads: case files are bounded wherever they are read", "[hostile][rea
 }
 
 TEST_CASE("reads: mesh limits hold whatever the line endings", "[hostile][reads][mesh_io]") {
-  const fs::path dir = scratch("endings");
+  const fs::path dir = hostile_scratch("endings");
   const MeshReadLimits limits{.max_triangles = 20, .max_vertices = 10};
   for (const std::string eol : {"\n", "\r", "\r\n"}) {
     const std::string name = eol == "\n" ? "lf" : (eol == "\r" ? "cr" : "crlf");
@@ -187,37 +178,37 @@ TEST_CASE("reads: mesh limits hold whatever the line endings", "[hostile][reads]
     // 50 vertices: refused at the 11th, on its own line, whatever ends the lines.
     std::string many;
     for (int i = 0; i < 50; ++i) many += "v " + std::to_string(i) + " 0 0" + eol;
-    const fs::path vertices = write(dir / (name + "_vertices.obj"), many);
+    const fs::path vertices = put_file(dir / (name + "_vertices.obj"), many);
     CHECK_THAT(error_of(read_obj(vertices, limits)),
                StartsWith(vertices.string() + ":11: ") && Contains("limit of 10 vertices"));
     // 3 vertices and 30 faces: refused at the 21st face (line 24).
     std::string faces = "v 0 0 0" + eol + "v 1 0 0" + eol + "v 0 1 0" + eol;
     for (int i = 0; i < 30; ++i) faces += "f 1 2 3" + eol;
-    const fs::path triangles = write(dir / (name + "_faces.obj"), faces);
+    const fs::path triangles = put_file(dir / (name + "_faces.obj"), faces);
     CHECK_THAT(error_of(read_obj(triangles, limits)),
                StartsWith(triangles.string() + ":24: ") && Contains("limit of 20 triangles"));
     // An OFF tetrahedron reads the same; an error names the right line.
     const std::string tet = "OFF" + eol + "4 4 0" + eol + "0 0 0" + eol + "1 0 0" + eol + "0 1 0" + eol + "0 0 1" + eol +
                             "3 0 2 1" + eol + "3 0 1 3" + eol + "3 0 3 2" + eol + "3 1 2 3" + eol;
-    const Result<Mesh> off = read_off(write(dir / (name + ".off"), tet));
+    const Result<Mesh> off = read_off(put_file(dir / (name + ".off"), tet));
     REQUIRE(off.ok());
     CHECK(off->vertices.size() == 4);
     CHECK(off->triangle_count() == 4);
-    const fs::path bad = write(dir / (name + "_bad.off"), tet + "3 1 2 3" + eol);
+    const fs::path bad = put_file(dir / (name + "_bad.off"), tet + "3 1 2 3" + eol);
     CHECK_THAT(error_of(read_off(bad)), StartsWith(bad.string() + ":11: ") && Contains("count mismatch"));
-    const fs::path header = write(dir / (name + "_header.off"), "OFF" + eol + "20 4 0" + eol + "0 0 0" + eol);
+    const fs::path header = put_file(dir / (name + "_header.off"), "OFF" + eol + "20 4 0" + eol + "0 0 0" + eol);
     CHECK_THAT(error_of(read_off(header, limits)), StartsWith(header.string() + ":2: ") && Contains("limit of 10"));
   }
   // Mixed endings count every line once ("\r\n" is one end, "\n\r" two).
-  const fs::path mixed = write(dir / "mixed.obj", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\n\rf 1 2 3\r\nf 1 2 9\n");
+  const fs::path mixed = put_file(dir / "mixed.obj", "v 0 0 0\r\nv 1 0 0\rv 0 1 0\n\rf 1 2 3\r\nf 1 2 9\n");
   CHECK_THAT(error_of(read_obj(mixed)), StartsWith(mixed.string() + ":6: ") && Contains("out of range"));
   // The file-size limit holds for every format and ending.
-  CHECK_THAT(error_of(read_mesh(write(dir / "size.obj", std::string(200, '\r')), {.max_file_bytes = 100})),
+  CHECK_THAT(error_of(read_mesh(put_file(dir / "size.obj", std::string(200, '\r')), {.max_file_bytes = 100})),
              Contains("larger than the limit of 100 bytes per mesh file"));
 }
 
 TEST_CASE("reads: OBJ numbers and corners are strict", "[hostile][reads][mesh_io]") {
-  const fs::path dir = scratch("obj_numbers");
+  const fs::path dir = hostile_scratch("obj_numbers");
   const std::string tri = "f 1 2 3\n";
   struct Bad {
     std::string name, text, line, what;
@@ -248,7 +239,7 @@ TEST_CASE("reads: OBJ numbers and corners are strict", "[hostile][reads][mesh_io
       {"free_form", "v 0 0 0\nv 1 0 0\nv 0 1 0\ncurv 0 1 1 2\n" + tri, "4", "free-form geometry"},
   };
   for (const Bad& b : bad) {
-    const fs::path path = write(dir / (b.name + ".obj"), b.text);
+    const fs::path path = put_file(dir / (b.name + ".obj"), b.text);
     const std::string message = error_of(read_obj(path));
     INFO(b.name << ": " << message);
     CHECK_THAT(message, StartsWith(path.string() + ":" + b.line + ": ") && Contains(b.what));
@@ -257,7 +248,7 @@ TEST_CASE("reads: OBJ numbers and corners are strict", "[hostile][reads][mesh_io
   const std::string good =
       "o part\nv +1 -2 .5\nv 1 2 3 1\nv 0 0 1 0.5 0.5 0.5\nv 1e-400 0 0\nvt 0 0\nvn 0 0 1\ns off\nusemtl stone\n"
       "g cut\nf 1/1 2//1 3/1/1\nl 1 2\np 3\nf -4 -3 -2\n";
-  const Result<Mesh> mesh = read_obj(write(dir / "good.obj", good));
+  const Result<Mesh> mesh = read_obj(put_file(dir / "good.obj", good));
   REQUIRE(mesh.ok());
   REQUIRE(mesh->vertices.size() == 4);
   CHECK(mesh->vertices[0] == Vec3(1, -2, 0.5));
@@ -268,7 +259,7 @@ TEST_CASE("reads: OBJ numbers and corners are strict", "[hostile][reads][mesh_io
 }
 
 TEST_CASE("reads: OFF numbers are strict", "[hostile][reads][mesh_io]") {
-  const fs::path dir = scratch("off_numbers");
+  const fs::path dir = hostile_scratch("off_numbers");
   const std::string faces = "3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
   struct Bad {
     std::string name, text, line, what;
@@ -294,17 +285,17 @@ TEST_CASE("reads: OFF numbers are strict", "[hostile][reads][mesh_io]") {
       {"corner_word", "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\nthree 0 2 1\n", "7", "non-numeric token 'three'"},
   };
   for (const Bad& b : bad) {
-    const fs::path path = write(dir / (b.name + ".off"), b.text);
+    const fs::path path = put_file(dir / (b.name + ".off"), b.text);
     const std::string message = error_of(read_off(path));
     INFO(b.name << ": " << message);
     CHECK_THAT(message, StartsWith(path.string() + ":" + b.line + ": ") && Contains(b.what));
   }
   // Header variants with their extra numbers read, keeping x y z only.
-  const Result<Mesh> rgba = read_off(write(dir / "rgba.off", "COFF\n4 4 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1 1\n"
+  const Result<Mesh> rgba = read_off(put_file(dir / "rgba.off", "COFF\n4 4 0\n0 0 0 1 1 1 1\n1 0 0 1 1 1\n0 1 0 1 1 1 1\n"
                                                              "0 0 1 0 0 0\n" + faces));
   REQUIRE(rgba.ok());
   CHECK(rgba->vertices[1] == Vec3(1, 0, 0));
-  const Result<Mesh> stcnoff = read_off(write(dir / "stcnoff.off", "STCNOFF\n4 4 0\n0 0 0 0 0 1 1 1 1 0 0\n"
+  const Result<Mesh> stcnoff = read_off(put_file(dir / "stcnoff.off", "STCNOFF\n4 4 0\n0 0 0 0 0 1 1 1 1 0 0\n"
                                                                    "1 0 0 0 0 1 1 1 1 0 1\n0 1 0 0 0 1 1 1 1 1 0\n"
                                                                    "0 0 1 0 0 1 1 1 1 1 1\n" + faces));
   REQUIRE(stcnoff.ok());

@@ -17,9 +17,10 @@
 
 namespace shatter::test {
 
-/// A fresh, empty folder for one test.
+/// A fresh, empty folder for one test (per process: ctest runs test cases side by side).
 inline std::filesystem::path hostile_scratch(const std::string& name) {
-  const auto dir = std::filesystem::temp_directory_path() / "shatter_hostile_tests" / name;
+  const auto dir =
+      std::filesystem::temp_directory_path() / ("shatter_hostile_tests_" + std::to_string(::getpid())) / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -30,8 +31,10 @@ inline std::string file_bytes(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-inline void put_file(const std::filesystem::path& p, const std::string& bytes) {
+/// Writes `bytes` to `p` (plain, not atomic: test input) and returns `p`.
+inline std::filesystem::path put_file(const std::filesystem::path& p, const std::string& bytes) {
   std::ofstream(p, std::ios::binary) << bytes;
+  return p;
 }
 
 /// Names in `dir` (not recursive).

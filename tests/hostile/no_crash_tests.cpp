@@ -2,6 +2,7 @@
 // refused before it runs (through every command and through the library), polygon faces of any size
 // are triangulated in O(n log n) with the right answer, and the Voronoi neighbour search is local.
 
+#include "tests/hostile/hostile_support.h"
 #include "algorithms/core/mesh_io.h"
 #include "algorithms/core/polygon_triangulation.h"
 #include "algorithms/core/predicates.h"
@@ -34,20 +35,10 @@ using shatter::test::line_count;
 using shatter::test::run_cli_argv;
 
 namespace fs = std::filesystem;
+using shatter::test::hostile_scratch;
+using shatter::test::put_file;
 
 namespace {
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / ("shatter_hostile_crash_" + std::to_string(::getpid())) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-fs::path write(const fs::path& path, const std::string& text) {
-  std::ofstream(path, std::ios::binary) << text;
-  return path;
-}
 
 /// A unit cube scaled by `scale` about the origin and moved by `offset`, as an OFF file.
 fs::path cube_off(const fs::path& path, double scale, double offset = 0.0) {
@@ -186,7 +177,7 @@ std::vector<Vec2> random_star(int corners, std::uint64_t seed) {
 
 TEST_CASE("no crash: coordinates outside the representable range are refused by every command",
           "[hostile][no_crash][cli]") {
-  const fs::path dir = scratch("range");
+  const fs::path dir = hostile_scratch("range");
   struct Far {
     std::string name;
     double scale, offset;
@@ -203,7 +194,7 @@ TEST_CASE("no crash: coordinates outside the representable range are refused by 
       require_refused({"fracture", "--mesh", mesh, "--algo", algo, "--fragments", "5"}, word);
     require_refused({"table", "--mesh", mesh, "--fragments", "5", "--repetitions", "1"}, word);
     const std::string case_file =
-        write(dir / (f.name + ".json"), R"({"mesh": {"file": ")" + mesh + R"("}, "impacts": [{"frame": 1,)"
+        put_file(dir / (f.name + ".json"), R"({"mesh": {"file": ")" + mesh + R"("}, "impacts": [{"frame": 1,)"
                                         R"( "point": [0, 0, 0], "direction": [0, 0, -1], "impulse": 10}]})")
             .string();
     require_refused({"accuracy", "--case", case_file, "--family", "fracture", "--repetitions", "1"}, word);
@@ -213,10 +204,10 @@ TEST_CASE("no crash: coordinates outside the representable range are refused by 
   }
   // A case that scales a plain unit cube out of range, and a primitive out of range.
   const std::string unit = cube_off(dir / "unit.off", 1.0).string();
-  const std::string scaled = write(dir / "scaled.json", R"({"mesh": {"file": ")" + unit + R"(", "scale": 1e90}})").string();
-  const std::string moved = write(dir / "moved.json", R"({"mesh": {"file": ")" + unit + R"(", "translate": [0, 0, 1e12]}})").string();
-  const std::string box = write(dir / "box.json", R"({"mesh": {"box": {"size": [1e100, 1, 1]}}})").string();
-  const std::string sphere = write(dir / "sphere.json", R"({"mesh": {"sphere": {"radius": 1e-9}}})").string();
+  const std::string scaled = put_file(dir / "scaled.json", R"({"mesh": {"file": ")" + unit + R"(", "scale": 1e90}})").string();
+  const std::string moved = put_file(dir / "moved.json", R"({"mesh": {"file": ")" + unit + R"(", "translate": [0, 0, 1e12]}})").string();
+  const std::string box = put_file(dir / "box.json", R"({"mesh": {"box": {"size": [1e100, 1, 1]}}})").string();
+  const std::string sphere = put_file(dir / "sphere.json", R"({"mesh": {"sphere": {"radius": 1e-9}}})").string();
   // The case's own keys are held to their physical ranges first, naming the key ...
   for (const std::string& c : {scaled, moved, box})
     require_refused({"grid", "--case", c, "--prefracture", "2", "--runtime", "2", "--repetitions", "1", "--frames", "2",
@@ -225,7 +216,7 @@ TEST_CASE("no crash: coordinates outside the representable range are refused by 
   // ... and a mesh that in-range keys carry out of the representable range is refused where it enters.
   const std::string distant = cube_off(dir / "far.off", 1e8).string();
   const std::string far_scaled =
-      write(dir / "far_scaled.json", R"({"mesh": {"file": ")" + distant + R"(", "scale": 1e3}})").string();
+      put_file(dir / "far_scaled.json", R"({"mesh": {"file": ")" + distant + R"(", "scale": 1e3}})").string();
   require_refused({"grid", "--case", far_scaled, "--prefracture", "2", "--runtime", "2", "--repetitions", "1",
                    "--frames", "2", "--no-cache"},
                   "representable range");
@@ -233,7 +224,7 @@ TEST_CASE("no crash: coordinates outside the representable range are refused by 
                    "2", "--no-cache"},
                   "must be in");
   const std::string tiny = cube_off(dir / "tiny.off", 1e-7).string();
-  const std::string tiny_case = write(dir / "tiny.json", R"({"mesh": {"file": ")" + tiny + R"("}})").string();
+  const std::string tiny_case = put_file(dir / "tiny.json", R"({"mesh": {"file": ")" + tiny + R"("}})").string();
   require_refused({"grid", "--case", tiny_case, "--prefracture", "2", "--runtime", "2", "--repetitions", "1",
                    "--frames", "2", "--no-cache"},
                   "extent");
@@ -308,7 +299,7 @@ TEST_CASE("no crash: polygon faces are triangulated into n - 2 triangles that co
   CHECK_FALSE(triangulate_polygon(pentagram, five, out).ok());
 
   // Through the readers: one OFF face and one OBJ face of 20,000 corners, and a face past the limit.
-  const fs::path dir = scratch("polygons");
+  const fs::path dir = hostile_scratch("polygons");
   const std::vector<Vec2> big = star(10000, 0.5);
   std::string off = "OFF\n" + std::to_string(big.size()) + " 1 0\n", obj, face = std::to_string(big.size()), obj_face = "f";
   char line[96];
@@ -322,15 +313,15 @@ TEST_CASE("no crash: polygon faces are triangulated into n - 2 triangles that co
     obj_face += ' ';
     obj_face += std::to_string(i + 1);
   }
-  const Result<Mesh> from_off = read_off(write(dir / "star.off", off + face + "\n"));
+  const Result<Mesh> from_off = read_off(put_file(dir / "star.off", off + face + "\n"));
   REQUIRE(from_off.ok());
   CHECK(from_off->triangle_count() == big.size() - 2);
   CHECK(surface_area(*from_off) == Approx(shoelace(big)).epsilon(1e-9));
-  const Result<Mesh> from_obj = read_obj(write(dir / "star.obj", obj + obj_face + "\n"));
+  const Result<Mesh> from_obj = read_obj(put_file(dir / "star.obj", obj + obj_face + "\n"));
   REQUIRE(from_obj.ok());
   CHECK(from_obj->triangle_count() == big.size() - 2);
   const std::string over = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n" + std::to_string(kMaxPolygonCorners + 1) + " 0 1 2\n";
-  const Result<Mesh> refused = read_off(write(dir / "over.off", over));
+  const Result<Mesh> refused = read_off(put_file(dir / "over.off", over));
   REQUIRE_FALSE(refused.ok());
   CHECK_THAT(refused.error().message, Contains(":6: ") && Contains("limit of 1000000 corners per polygon"));
 }

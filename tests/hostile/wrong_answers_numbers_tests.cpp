@@ -3,6 +3,7 @@
 // zero base or a non-finite results file, one run merged twice, seeds and numeric flags that wrap,
 // saturate or read NaN, and a damaged pre-fracture cache entry. Every input is generated here.
 
+#include "tests/hostile/hostile_support.h"
 #include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
@@ -35,17 +36,10 @@ using shatter::test::line_count;
 using shatter::test::run_cli;
 using shatter::test::run_cli_argv;
 namespace fs = std::filesystem;
+using shatter::test::hostile_scratch;
+using shatter::test::put_file;
 
 namespace {
-
-fs::path scratch(const std::string& name) {
-  const fs::path dir = fs::temp_directory_path() / "shatter_hostile_numbers" / std::to_string(::getpid()) / name;
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
-void write_text(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 /// Exit 2 with exactly one stderr line that holds `needle`, and nothing on stdout.
 void check_refused(const shatter::test::CliRun& r, const std::string& needle) {
@@ -185,12 +179,12 @@ TEST_CASE("numbers: case files refuse physical values outside their documented r
   CHECK(parse_case(small_case({{"gravity", {0, 0, 0}}}).dump(), "ok.json"));
 
   // Through the CLI: exit 2 and one line naming the key, for the stress command and the grid.
-  const fs::path dir = scratch("cases");
+  const fs::path dir = hostile_scratch("cases");
   const fs::path stiff = dir / "stiff.json";
-  write_text(stiff, small_case({{"material", {{"young_modulus", 1e300}}}}).dump());
+  put_file(stiff, small_case({{"material", {{"young_modulus", 1e300}}}}).dump());
   check_refused(run_cli_argv({"stress", "--case", stiff.string()}), "material.young_modulus");
   const fs::path heavy = dir / "heavy.json";
-  write_text(heavy, small_case({{"gravity", {0, 0, -1e308}}}).dump());
+  put_file(heavy, small_case({{"gravity", {0, 0, -1e308}}}).dump());
   check_refused(run_cli_argv({"stress", "--case", heavy.string(), "--json"}), "gravity[2]");
   check_refused(run_cli_argv({"grid", "--case", heavy.string(), "--no-cache", "--repetitions", "1"}), "gravity[2]");
 }
@@ -263,10 +257,10 @@ TEST_CASE("numbers: compare judges a zero base by the absolute change and never 
   }
 
   // A number too large for a double in a results file: compare, merge and report refuse the file.
-  const fs::path dir = scratch("compare");
+  const fs::path dir = hostile_scratch("compare");
   const nlohmann::ordered_json good = grid_to_json(grid(1.0, 1e-4), {{"name", "synthetic"}}, ctx);
   const fs::path base = dir / "base.json";
-  write_text(base, good.dump());
+  put_file(base, good.dump());
   for (const std::string key : {"worst_frame_ms", "frame_ms", "calibration_ms"}) {
     std::string text = good.dump();
     const std::string needle = "\"" + key + "\":";
@@ -278,7 +272,7 @@ TEST_CASE("numbers: compare judges a zero base by the absolute change and never 
     const std::size_t end = text.find_first_of(",]}", value + 5);
     text.erase(value + 5, end - value - 5);
     const fs::path bad = dir / ("bad_" + key + ".json");
-    write_text(bad, text);
+    put_file(bad, text);
     INFO(key);
     check_refused(run_cli_argv({"compare", base.string(), bad.string()}), "not finite");
     check_refused(run_cli_argv({"compare", bad.string(), base.string()}), bad.string());
@@ -311,11 +305,11 @@ TEST_CASE("numbers: merge refuses one file or one run given twice", "[hostile][n
     summarise_cell(g.cells.back(), g.budget_ms, g.latency_budget_ms);
     return g;
   };
-  const fs::path dir = scratch("merge");
+  const fs::path dir = hostile_scratch("merge");
   const fs::path a = dir / "a.json", b = dir / "b.json", copy = dir / "copy.json", hard = dir / "hard.json",
                  link = dir / "link.json";
-  write_text(a, grid_to_json(grid(1.0), {{"name", "synthetic"}}, ctx).dump(1));
-  write_text(b, grid_to_json(grid(1.2), {{"name", "synthetic"}}, ctx).dump(1));
+  put_file(a, grid_to_json(grid(1.0), {{"name", "synthetic"}}, ctx).dump(1));
+  put_file(b, grid_to_json(grid(1.2), {{"name", "synthetic"}}, ctx).dump(1));
   fs::copy_file(a, copy);
   fs::create_hard_link(a, hard);
   fs::create_symlink(a, link);
@@ -371,9 +365,9 @@ TEST_CASE("numbers: seeds and numeric flags are read strictly on every command",
   CHECK(cli::numeric_flag_error("FLOAT", neg).empty());
 
   // Every command, through the CLI: exit 2, one line naming the flag.
-  const fs::path dir = scratch("flags");
+  const fs::path dir = hostile_scratch("flags");
   const fs::path mesh = dir / "box.off";
-  write_text(mesh, "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+  put_file(mesh, "OFF\n8 12 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
                    "3 0 2 1\n3 0 3 2\n3 4 5 6\n3 4 6 7\n3 0 1 5\n3 0 5 4\n3 1 2 6\n3 1 6 5\n3 2 3 7\n3 2 7 6\n"
                    "3 3 0 4\n3 3 4 7\n");
   const std::string j = (dir / "out.json").string();
@@ -427,14 +421,14 @@ TEST_CASE("numbers: seeds and numeric flags are read strictly on every command",
 
 TEST_CASE("numbers: a damaged pre-fracture cache entry is computed again, with the same result",
           "[hostile][numbers][cache]") {
-  const fs::path dir = scratch("cache");
+  const fs::path dir = hostile_scratch("cache");
   const fs::path cache = dir / "cache";
   const fs::path case_file = dir / "case.json";
   nlohmann::json c = small_case();
   c.erase("prefracture");
   c["prefracture"] = {{"fracturer", "voronoi"}, {"fragments", 6}, {"seed", 3}};
   c["frames"] = 2;
-  write_text(case_file, c.dump());
+  put_file(case_file, c.dump());
   const auto run = [&](const std::string& name) {
     std::string file = name;  // the label as a file name: outputs go only into folders that exist
     std::replace(file.begin(), file.end(), '/', '_');
@@ -458,15 +452,15 @@ TEST_CASE("numbers: a damaged pre-fracture cache entry is computed again, with t
   CHECK(run("hit").second);
 
   const std::vector<std::pair<std::string, std::function<void()>>> damages = {
-      {"truncated", [&] { write_text(entry, good.substr(0, good.size() / 2)); }},
-      {"empty", [&] { write_text(entry, ""); }},
-      {"garbage", [&] { write_text(entry, std::string(good.size(), '\x5a')); }},
-      {"one flipped byte", [&] { std::string d = good; d[d.size() / 2] ^= 0x10; write_text(entry, d); }},
-      {"a NaN vertex", [&] { std::string d = good; for (int i = 0; i < 8; ++i) d[200 + i] = '\xff'; write_text(entry, d); }},
-      {"wrong version", [&] { std::string d = good; d[7] = '9'; write_text(entry, d); }},
-      {"a tail appended", [&] { write_text(entry, good + std::string(100, '\0')); }},
+      {"truncated", [&] { put_file(entry, good.substr(0, good.size() / 2)); }},
+      {"empty", [&] { put_file(entry, ""); }},
+      {"garbage", [&] { put_file(entry, std::string(good.size(), '\x5a')); }},
+      {"one flipped byte", [&] { std::string d = good; d[d.size() / 2] ^= 0x10; put_file(entry, d); }},
+      {"a NaN vertex", [&] { std::string d = good; for (int i = 0; i < 8; ++i) d[200 + i] = '\xff'; put_file(entry, d); }},
+      {"wrong version", [&] { std::string d = good; d[7] = '9'; put_file(entry, d); }},
+      {"a tail appended", [&] { put_file(entry, good + std::string(100, '\0')); }},
       {"huge (sparse, past the limit)", [&] {
-         write_text(entry, good);
+         put_file(entry, good);
          fs::resize_file(entry, (1ULL << 30) + 4096);
        }},
       {"a folder", [&] { fs::remove(entry); fs::create_directory(entry); }},
@@ -485,6 +479,6 @@ TEST_CASE("numbers: a damaged pre-fracture cache entry is computed again, with t
     CHECK(next_hit);  // the damaged entry, whatever it was, was replaced by the recomputed one
     CHECK(fs::is_regular_file(fs::symlink_status(entry)));
     fs::remove_all(entry);
-    write_text(entry, good);
+    put_file(entry, good);
   }
 }
