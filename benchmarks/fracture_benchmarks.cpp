@@ -1,9 +1,10 @@
-// Google Benchmark: the fracture kernels side by side (plane-slice and its exact reference cgal-clip)
-// on real meshes of about 1k, 10k and 100k triangles: one plane slice, and recursive fracture into 5,
-// 25 and 100 fragments. Error figures ride along as counters, so every time has its accuracy next to it.
+// Google Benchmark: the fracture kernels side by side on real meshes of about 1k, 10k and 100k
+// triangles: one plane slice (plane-slice and its exact reference cgal-clip), and every registered
+// fracturer into 5, 25 and 100 fragments. Error figures ride along as counters, so every time has its accuracy next to it.
 //
 //   build/bin/shatter_benchmarks [--benchmark_filter=...] [--benchmark_repetitions=5]
-// Families: slice/ and fracture/ (plane-slice vs cgal-clip), voronoi/ (voronoi vs its exact cell replay;
+// Families: slice/ (plane-slice vs cgal-clip), fracture/ (every fracturer of the registries given to
+// register_fracture_benchmarks, so a plugin registered in benchmark_main.cpp is benchmarked), voronoi/ (voronoi vs its exact cell replay;
 // `voronoi` breaks a solid it has seen before, `voronoi-first` one it has not, so it pays the input check
 // of self_intersection.h every time, as the replay does), self-intersection/ (that check alone).
 //
@@ -15,9 +16,9 @@
 #include "algorithms/fracture/voronoi/voronoi_cells.h"
 #include "algorithms/fracture/voronoi/voronoi_fracturer.h"
 #include "algorithms/fracture/voronoi/voronoi_sites.h"
-#include "algorithms/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/metrics/fracture_metrics.h"
+#include "benchmarks/benchmark_families.h"
 
 #include <benchmark/benchmark.h>
 
@@ -79,9 +80,13 @@ void slice_once(benchmark::State& state, const Solid& solid, const std::string& 
 /// every fracture, so that each iteration is the solid's first fracture.
 enum class Visit { again, first };
 
-void fracture_into(benchmark::State& state, const Solid& solid, const std::string& algorithm, int n,
-                   Visit visit = Visit::again) {
-  auto fracturer = registries().fracturers.create(algorithm);
+void fracture_into(benchmark::State& state, const Registries& registries, const Solid& solid,
+                   const std::string& algorithm, int n, Visit visit = Visit::again) {
+  auto fracturer = registries.fracturers.create(algorithm);
+  if (!fracturer) {
+    state.SkipWithError(fracturer.error().message.c_str());
+    return;
+  }
   FractureParams params;
   params.fragments = n;
   params.seed = 1;
@@ -135,7 +140,9 @@ void voronoi_replay(benchmark::State& state, const Solid& solid, int n) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+namespace shatter {
+
+void register_fracture_benchmarks(const Registries& registries) {
   static std::vector<std::pair<std::string, Solid>> solids;
   for (const std::string& name : ladder()) {
     Result<Solid> solid = load_solid(mesh_dir() / name);
@@ -145,16 +152,19 @@ int main(int argc, char** argv) {
     }
     solids.emplace_back(name, std::move(*solid));
   }
+  const Registries* reg = &registries;
   for (const auto& [name, solid] : solids) {
+    const Solid* s = &solid;
     for (const char* algorithm : {"plane-slice", "cgal-clip"}) {
-      const Solid* s = &solid;
       const std::string algo = algorithm;
       benchmark::RegisterBenchmark(("slice/" + name + "/" + algo).c_str(),
                                    [s, algo](benchmark::State& st) { slice_once(st, *s, algo); })
           ->Unit(benchmark::kMillisecond);
+    }
+    for (const std::string& algo : registries.fracturers.names()) {
       for (int n : {5, 25, 100}) {
         benchmark::RegisterBenchmark(("fracture/" + name + "/" + algo + "/" + std::to_string(n)).c_str(),
-                                     [s, algo, n](benchmark::State& st) { fracture_into(st, *s, algo, n); })
+                                     [reg, s, algo, n](benchmark::State& st) { fracture_into(st, *reg, *s, algo, n); })
             ->Unit(benchmark::kMillisecond);
       }
     }
@@ -163,10 +173,10 @@ int main(int argc, char** argv) {
     const Solid* s = &solid;
     for (int n : {5, 25, 100}) {
       benchmark::RegisterBenchmark(("voronoi/" + name + "/voronoi/" + std::to_string(n)).c_str(),
-                                   [s, n](benchmark::State& st) { fracture_into(st, *s, "voronoi", n); })
+                                   [reg, s, n](benchmark::State& st) { fracture_into(st, *reg, *s, "voronoi", n); })
           ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("voronoi/" + name + "/voronoi-first/" + std::to_string(n)).c_str(),
-                                   [s, n](benchmark::State& st) { fracture_into(st, *s, "voronoi", n, Visit::first); })
+                                   [reg, s, n](benchmark::State& st) { fracture_into(st, *reg, *s, "voronoi", n, Visit::first); })
           ->Unit(benchmark::kMillisecond);
       benchmark::RegisterBenchmark(("voronoi/" + name + "/cgal-replay/" + std::to_string(n)).c_str(),
                                    [s, n](benchmark::State& st) { voronoi_replay(st, *s, n); })
@@ -179,9 +189,6 @@ int main(int argc, char** argv) {
                                  [s](benchmark::State& st) { self_intersection(st, *s); })
         ->Unit(benchmark::kMillisecond);
   }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
 }
+
+}  // namespace shatter

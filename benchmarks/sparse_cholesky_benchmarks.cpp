@@ -3,7 +3,7 @@
 // walls of n x n blocks (the decoupled block the wall benchmarks factorise), for the analysis, the
 // numeric factorisation and one solve; the node blocks' refactorisation after a cascade's break; and
 // the residual after each refinement step of a solve. These are the figures of docs/stress.md,
-// section 3 ("Node blocks", "Partial refactorisation"). The main is in fracture_benchmarks.cpp.
+// section 3 ("Node blocks", "Partial refactorisation"). The main is in benchmark_main.cpp.
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
 #include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"

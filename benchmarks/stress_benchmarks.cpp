@@ -4,10 +4,11 @@
 // same structure under new loads), so from the second iteration on the solver reuses the split and
 // factors of the unchanged stiffness (linear_solve.h) and its analyses (analysis_pool.h); the "cold"
 // variants drop all of that before every iteration (a graph seen for the first time). The cold cascade
-// on small 3D boxes shows the other end: dense blocks, few rounds. The main is in
-// fracture_benchmarks.cpp.
+// on small 3D boxes shows the other end: dense blocks, few rounds. evaluate_wall and cascade_wall run
+// every stress model of the registries given to register_stress_benchmarks (benchmark_main.cpp); the
+// cold variants measure the rigid-body-spring solver's reuse and name its models.
 #include "algorithms/core/random.h"
-#include "algorithms/register_all.h"
+#include "benchmarks/benchmark_families.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "tests/stress/structures.h"
@@ -75,9 +76,20 @@ void forget_if_cold(benchmark::State& state, Pool pool) {
   state.ResumeTiming();
 }
 
-void evaluate_wall(benchmark::State& state, const char* model_name, Pool pool = Pool::warm) {
+/// The built-in plugins, for the cold variants below (registered statically, by name).
+const Registries& builtin() {
+  static const Registries r = [] {
+    Registries out;
+    register_all(out);
+    return out;
+  }();
+  return r;
+}
+
+void evaluate_wall(benchmark::State& state, const Registries& registries, const std::string& model_name,
+                   Pool pool = Pool::warm) {
   const SupportGraph& g = wall(static_cast<int>(state.range(0)));
-  const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
+  const std::unique_ptr<StressModel> model = std::move(registries.stress_models.create(model_name).value());
   SolverReport report;
   Loads loads;
   loads.point_loads.push_back(PointLoad{});
@@ -96,9 +108,9 @@ void evaluate_wall(benchmark::State& state, const char* model_name, Pool pool = 
 }
 
 /// The cascade of `g` after `broken`, with mortar of `tensile_strength` (Pa), timed per iteration.
-void run_cascade(benchmark::State& state, const char* model_name, const SupportGraph& g, std::span<const int> broken,
-                 double tensile_strength, Pool pool) {
-  const std::unique_ptr<StressModel> model = std::move(registries().stress_models.create(model_name).value());
+void run_cascade(benchmark::State& state, const Registries& registries, const std::string& model_name,
+                 const SupportGraph& g, std::span<const int> broken, double tensile_strength, Pool pool) {
+  const std::unique_ptr<StressModel> model = std::move(registries.stress_models.create(model_name).value());
   Material weak;  // a weak mortar, so that the hole makes something else fail
   weak.tensile_strength = tensile_strength;
   SolverReport report;
@@ -114,9 +126,10 @@ void run_cascade(benchmark::State& state, const char* model_name, const SupportG
   state.counters["rounds"] = rounds;
 }
 
-void cascade_wall(benchmark::State& state, const char* model_name, Pool pool = Pool::warm) {
+void cascade_wall(benchmark::State& state, const Registries& registries, const std::string& model_name,
+                  Pool pool = Pool::warm) {
   const SupportGraph& g = wall(static_cast<int>(state.range(0)));
-  run_cascade(state, model_name, g, hole(g), 2e4, pool);
+  run_cascade(state, registries, model_name, g, hole(g), 2e4, pool);
 }
 
 /// A 2.5 m cube anchored at its foot, cut into 5 x 5 x 5 blocks along the axes (arg 0: 300 bonds, blocks
@@ -156,20 +169,37 @@ void cascade_box_cold(benchmark::State& state, const char* model_name) {
     const double d = std::abs(c.x()) + std::abs(c.y()) + std::abs(c.z() - 0.75);
     if (d < best) best = d, hole = v;
   }
-  run_cascade(state, model_name, g, g.node_bonds[static_cast<std::size_t>(hole)], 3e3, Pool::cold);
+  run_cascade(state, builtin(), model_name, g, g.node_bonds[static_cast<std::size_t>(hole)], 3e3, Pool::cold);
 }
 
-void evaluate_wall_cold(benchmark::State& state, const char* model_name) { evaluate_wall(state, model_name, Pool::cold); }
-void cascade_wall_cold(benchmark::State& state, const char* model_name) { cascade_wall(state, model_name, Pool::cold); }
+void evaluate_wall_cold(benchmark::State& state, const char* model_name) {
+  evaluate_wall(state, builtin(), model_name, Pool::cold);
+}
+void cascade_wall_cold(benchmark::State& state, const char* model_name) {
+  cascade_wall(state, builtin(), model_name, Pool::cold);
+}
 
 }  // namespace
 
-BENCHMARK_CAPTURE(evaluate_wall, connection_count, "connection-count")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(evaluate_wall, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(evaluate_wall, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cascade_wall, connection_count, "connection-count")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cascade_wall, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(cascade_wall, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+namespace shatter {
+
+void register_stress_benchmarks(const Registries& registries) {
+  const Registries* reg = &registries;
+  for (const std::string& model : registries.stress_models.names()) {
+    std::string label = model;  // "connection-count" -> "connection_count", as the cold variants are named
+    for (char& c : label)
+      if (c == '-') c = '_';
+    benchmark::RegisterBenchmark(("evaluate_wall/" + label).c_str(),
+                                 [reg, model](benchmark::State& st) { evaluate_wall(st, *reg, model); })
+        ->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark(("cascade_wall/" + label).c_str(),
+                                 [reg, model](benchmark::State& st) { cascade_wall(st, *reg, model); })
+        ->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace shatter
+
 BENCHMARK_CAPTURE(evaluate_wall_cold, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(evaluate_wall_cold, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cascade_wall_cold, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);

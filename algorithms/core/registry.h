@@ -1,13 +1,16 @@
 #pragma once
 /// Plugins by name: one table per interface (fracturers, stress models). Registration is explicit
-/// (algorithms/register_all.cpp), never by static initialisers, so a linker cannot silently drop a
-/// plugin.
+/// (algorithms/registry/register_all.cpp for the built-ins, one `add` per plugin for a program's own),
+/// never by static initialisers, so a linker cannot silently drop a plugin. A registry is a value: the
+/// caller makes one, fills it and passes it to the runs.
 
+#include "algorithms/core/plugin_settings.h"
 #include "algorithms/core/result.h"
 
 #include <cassert>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,20 +25,22 @@ inline constexpr std::string_view plugin_kind = "plugin";
 template <class Plugin>
 class Registry {
  public:
-  /// Creates a plugin with its default settings.
-  using Factory = std::function<std::unique_ptr<Plugin>()>;
+  /// Creates a plugin from its settings (empty: every default); an error names the bad key.
+  using Factory = std::function<Result<std::unique_ptr<Plugin>>(const PluginSettings&)>;
 
-  /// Adds a plugin; asserts that the name is new and the description one line.
-  void add(std::string name, std::string description, Factory factory) {
+  /// Adds a plugin with its documented settings; asserts that the name is new and the description
+  /// one line.
+  void add(std::string name, std::string description, std::vector<SettingDoc> settings, Factory factory) {
     assert(description.find('\n') == std::string::npos);
     for ([[maybe_unused]] const Entry& e : entries_) assert(e.name != name && "plugin registered twice");
-    entries_.push_back({std::move(name), std::move(description), std::move(factory)});
+    entries_.push_back({std::move(name), std::move(description), std::move(settings), std::move(factory)});
   }
 
-  /// Creates the named plugin, or an error that lists the known names.
-  [[nodiscard]] Result<std::unique_ptr<Plugin>> create(std::string_view name) const {
-    for (const Entry& e : entries_)
-      if (e.name == name) return e.factory();
+  /// Creates the named plugin from `settings`, or an error that lists the known names (unknown name)
+  /// or names the key (bad settings).
+  [[nodiscard]] Result<std::unique_ptr<Plugin>> create(std::string_view name,
+                                                       const PluginSettings& settings = {}) const {
+    if (const Entry* e = find(name)) return e->factory(settings);
     std::string known;
     for (const Entry& e : entries_) known += (known.empty() ? "" : ", ") + e.name;
     return Error{"unknown " + std::string(plugin_kind<Plugin>) + " '" + std::string(name) + "' (known: " + known +
@@ -51,17 +56,28 @@ class Registry {
 
   /// One-line description of a registered name ("" when unknown).
   [[nodiscard]] std::string description(std::string_view name) const {
-    for (const Entry& e : entries_)
-      if (e.name == name) return e.description;
-    return {};
+    const Entry* e = find(name);
+    return e ? e->description : std::string();
+  }
+
+  /// The documented settings of a registered name (empty when unknown or without settings).
+  [[nodiscard]] std::span<const SettingDoc> settings(std::string_view name) const {
+    const Entry* e = find(name);
+    return e ? std::span<const SettingDoc>(e->settings) : std::span<const SettingDoc>();
   }
 
  private:
   struct Entry {
     std::string name;
     std::string description;
+    std::vector<SettingDoc> settings;
     Factory factory;
   };
+  [[nodiscard]] const Entry* find(std::string_view name) const {
+    for (const Entry& e : entries_)
+      if (e.name == name) return &e;
+    return nullptr;
+  }
   std::vector<Entry> entries_;
 };
 

@@ -9,6 +9,7 @@
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
+#include "algorithms/fracture/cut_plan.h"
 
 #include <cstdint>
 #include <memory>
@@ -48,6 +49,16 @@ class Fracturer {
   /// Fractures `solid` (a validated closed mesh). Errors only for parameters it cannot honour.
   [[nodiscard]] virtual Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                                const FractureParams& params) const = 0;
+  /// The cuts `fracture(solid, params)` makes, for the exact replay; none (the default) when the
+  /// fracturer cannot state them. Errors as fracture() does.
+  [[nodiscard]] virtual Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
+                                                                const FractureParams& params) const {
+    (void)solid;
+    (void)params;
+    return std::optional<CutPlan>();
+  }
+  /// True for an exact reference: the fracturer others are replayed with, not itself measured.
+  [[nodiscard]] virtual bool exact_reference() const { return false; }
 };
 
 }  // namespace shatter

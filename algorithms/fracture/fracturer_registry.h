@@ -11,7 +11,7 @@ inline constexpr std::string_view plugin_kind<Fracturer> = "fracturer";
 
 /// Name -> fracturer factory table.
 using FracturerRegistry = Registry<Fracturer>;
-/// Creates a fracturer with its default settings.
+/// Creates a fracturer from its settings.
 using FracturerFactory = FracturerRegistry::Factory;
 
 }  // namespace shatter

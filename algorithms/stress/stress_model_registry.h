@@ -11,7 +11,7 @@ inline constexpr std::string_view plugin_kind<StressModel> = "stress model";
 
 /// Name -> stress model factory table.
 using StressModelRegistry = Registry<StressModel>;
-/// Creates a stress model with its default settings.
+/// Creates a stress model from its settings.
 using StressModelFactory = StressModelRegistry::Factory;
 
 }  // namespace shatter

@@ -1,7 +1,5 @@
 #include "harness/accuracy/fracture_accuracy.h"
 
-#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
-#include "algorithms/register_all.h"
 #include "harness/accuracy/fracture_replay.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
@@ -10,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 
@@ -20,7 +19,7 @@ namespace {
 struct Setting {
   std::unique_ptr<Fracturer> fracturer;
   int fragments = 0;
-  std::optional<int> resolution;  // fem-lite only
+  std::optional<std::pair<std::string, double>> knob;  // the accuracy knob's key and value, when it has one
 };
 
 AccuracyPoint measure(const std::string& case_name, const Solid& solid, const std::optional<Impact>& impact,
@@ -31,9 +30,15 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
   p.algorithm = std::string(s.fracturer->name());
   p.knobs = {{"fragments", s.fragments}};
   p.knob = fmt::format("fragments={}", s.fragments);
-  if (s.resolution) {
-    p.knobs["resolution"] = *s.resolution;
-    p.knob += fmt::format(" resolution={}", *s.resolution);
+  if (s.knob) {
+    const double v = s.knob->second;
+    if (v == std::floor(v) && std::abs(v) < 1e15) {  // whole numbers as integers, as a resolution is
+      p.knobs[s.knob->first] = static_cast<long long>(v);
+      p.knob += fmt::format(" {}={}", s.knob->first, static_cast<long long>(v));
+    } else {
+      p.knobs[s.knob->first] = v;
+      p.knob += fmt::format(" {}={}", s.knob->first, v);
+    }
   }
   FractureParams params;
   params.fragments = s.fragments;
@@ -86,31 +91,46 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
 
 }  // namespace
 
-std::vector<std::string> default_accuracy_fracturers() {
+std::vector<std::string> default_accuracy_fracturers(const Registries& registries) {
   std::vector<std::string> out;
-  for (const std::string& name : registries().fracturers.names())
-    if (name != "cgal-clip") out.push_back(name);
+  for (const std::string& name : registries.fracturers.names()) {
+    Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name);
+    if (!f || !(*f)->exact_reference()) out.push_back(name);
+  }
   return out;
+}
+
+std::optional<std::pair<std::string, std::vector<double>>> accuracy_knob(
+    const Registries& registries, const std::string& name,
+    const std::map<std::string, std::vector<double>, std::less<>>& sweeps) {
+  for (const SettingDoc& d : registries.fracturers.settings(name)) {
+    if (d.accuracy_sweep.empty()) continue;
+    const auto it = sweeps.find(d.key);
+    return std::make_pair(d.key, it != sweeps.end() ? it->second : d.accuracy_sweep);
+  }
+  return std::nullopt;
 }
 
 Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_name, const Solid& solid,
                                                      const std::optional<Impact>& impact,
-                                                     const FractureAccuracyOptions& options) {
+                                                     const FractureAccuracyOptions& options,
+                                                     const Registries& registries) {
   const std::vector<std::string> names =
-      options.fracturers.empty() ? default_accuracy_fracturers() : options.fracturers;
+      options.fracturers.empty() ? default_accuracy_fracturers(registries) : options.fracturers;
   std::vector<AccuracyPoint> points;
   for (const std::string& name : names) {
+    const auto knob = accuracy_knob(registries, name, options.sweeps);
     for (const int n : options.fragments) {
-      if (name == "fem-lite") {
-        for (const int resolution : options.fem_resolutions) {
-          FemLiteSettings settings;
-          settings.resolution = resolution;
-          Setting s{std::make_unique<FemLiteFracturer>(settings), n, resolution};
+      if (knob) {
+        for (const double value : knob->second) {
+          Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name, {{knob->first, value}});
+          if (!f) return f.error();
+          Setting s{std::move(*f), n, std::make_pair(knob->first, value)};
           points.push_back(measure(case_name, solid, impact, s, options));
         }
         continue;
       }
-      Result<std::unique_ptr<Fracturer>> f = registries().fracturers.create(name);
+      Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name);
       if (!f) return f.error();
       Setting s{std::move(*f), n, std::nullopt};
       points.push_back(measure(case_name, solid, impact, s, options));

@@ -4,9 +4,11 @@
 
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
+#include "algorithms/registry/registries.h"
 #include "harness/accuracy/accuracy_point.h"
 #include "harness/cases/load_solid.h"
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,21 +17,32 @@ namespace shatter {
 
 /// What the fracture sweep runs.
 struct FractureAccuracyOptions {
-  std::vector<std::string> fracturers;          ///< registered names; every one with a replay when empty
+  std::vector<std::string> fracturers;          ///< registered names; default_accuracy_fracturers() when empty
   std::vector<int> fragments = {5, 25, 100};    ///< requested fragment counts
-  std::vector<int> fem_resolutions = {8, 16, 32};  ///< fem-lite's grid resolution knob (cells along the longest axis)
+  /// Values swept for a setting key, replacing the plugin's own SettingDoc::accuracy_sweep (e.g.
+  /// "resolution" -> {8, 16}); a key no fracturer sweeps is ignored.
+  std::map<std::string, std::vector<double>, std::less<>> sweeps;
   int repetitions = 3;                          ///< timed runs per point (seed 1 each: the same work), >= 1
   int partition_samples = 500;                  ///< points of the partition test (fracture_metrics)
 };
 
-/// The fracturers `accuracy` sweeps by default: every registered one except the reference cgal-clip.
-std::vector<std::string> default_accuracy_fracturers();
+/// The fracturers `accuracy` sweeps by default: every registered one except the exact references
+/// (Fracturer::exact_reference).
+std::vector<std::string> default_accuracy_fracturers(const Registries& registries);
+
+/// The accuracy knob of fracturer `name`: its first documented setting with an accuracy sweep, and the
+/// values swept (from `sweeps` when it names the key); none when it has no knob.
+std::optional<std::pair<std::string, std::vector<double>>> accuracy_knob(
+    const Registries& registries, const std::string& name,
+    const std::map<std::string, std::vector<double>, std::less<>>& sweeps);
 
 /// Runs the sweep on `solid` (named `case_name`), hit by `impact` when given. A fracturer or replay
 /// that fails at one setting gives a point without error whose figures hold `failed` (the message);
-/// an unknown fracturer name is an error.
+/// an unknown fracturer name, or a knob value its settings refuse, is an error. Each fracturer runs at
+/// every fragment count, and at every value of its accuracy knob (accuracy_knob) when it has one.
 Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_name, const Solid& solid,
                                                      const std::optional<Impact>& impact,
-                                                     const FractureAccuracyOptions& options);
+                                                     const FractureAccuracyOptions& options,
+                                                     const Registries& registries);
 
 }  // namespace shatter

@@ -1,11 +1,6 @@
 #include "harness/accuracy/fracture_replay.h"
 
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
-#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
-#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/fracture/voronoi/voronoi_cells.h"
-#include "algorithms/fracture/voronoi/voronoi_fracturer.h"
-#include "algorithms/fracture/voronoi/voronoi_sites.h"
 
 #include <algorithm>
 #include <cmath>
@@ -15,25 +10,10 @@
 namespace shatter {
 
 Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const Mesh& solid, const FractureParams& params) {
-  const CgalClipFracturer exact;
-  if (dynamic_cast<const PlaneSliceFracturer*>(&fracturer)) return exact.fracture(solid, params);
-  if (dynamic_cast<const VoronoiFracturer*>(&fracturer)) {
-    // The registered voronoi uses the default site settings, as here.
-    Result<std::vector<Vec3>> sites = sample_sites(solid, params);
-    if (!sites) return sites.error();
-    const int n = static_cast<int>(sites->size());
-    std::vector<ConvexCell> cells(sites->size());
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j)
-        if (i != j) cells[static_cast<std::size_t>(i)].planes.push_back(bisector_plane(*sites, i, j));
-    return exact.fracture_by_cells(solid, cells);
-  }
-  if (const auto* fem = dynamic_cast<const FemLiteFracturer*>(&fracturer)) {
-    Result<std::vector<Plane>> planes = fem->crack_planes(solid, params);
-    if (!planes) return planes.error();
-    return exact.fracture_by_planes(solid, *planes);
-  }
-  return Error{"no exact replay for fracturer '" + std::string(fracturer.name()) + "'"};
+  Result<std::optional<CutPlan>> plan = fracturer.cut_plan(solid, params);
+  if (!plan) return plan.error();
+  if (!plan->has_value()) return Error{"no exact replay for fracturer '" + std::string(fracturer.name()) + "'"};
+  return CgalClipFracturer().replay(solid, **plan);
 }
 
 ReplayMismatch replay_mismatch(const std::vector<Fragment>& fast, const std::vector<Fragment>& exact) {

@@ -1,6 +1,7 @@
 #pragma once
-/// A fracturer's output against the exact CGAL replay of the same cuts (cgal-clip): plane-slice's cut
-/// schedule, voronoi's bisector cells, fem-lite's crack planes.
+/// A fracturer's output against the exact CGAL replay (cgal-clip) of the cuts it reports
+/// (Fracturer::cut_plan): plane-slice's cut schedule, voronoi's bisector cells, fem-lite's crack planes,
+/// or whatever plan a fracturer registered from outside the library states.
 
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
@@ -9,9 +10,8 @@
 
 namespace shatter {
 
-/// The exact replay of what `fracturer` does to `solid` with `params`: cgal-clip's fracture (the same
-/// schedule as plane-slice), fracture_by_cells on the bisector cells of voronoi's sites, or
-/// fracture_by_planes on fem-lite's crack planes. Error for a fracturer with no replay (its name).
+/// The exact replay of what `fracturer` does to `solid` with `params`: its cut plan replayed by
+/// CgalClipFracturer::replay. Error for a fracturer that states no cut plan (naming it).
 Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const Mesh& solid, const FractureParams& params);
 
 /// How far fragments are from their exact replay.

@@ -1,6 +1,5 @@
 #include "harness/accuracy/stress_accuracy.h"
 
-#include "algorithms/register_all.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "harness/accuracy/beam_reference.h"
 #include "harness/pipeline/case_structure.h"
@@ -137,39 +136,50 @@ AccuracyPoint measure(const std::string& case_name, const Structure& s, const Se
   return p;
 }
 
-/// The settings of `name` swept on a structure: the default one, plus the solver knobs when `solver`.
-Result<std::vector<Setting>> settings_for(const std::string& name, const std::string& prefix, bool solver,
-                                          const nlohmann::ordered_json& base, const StressAccuracyOptions& o) {
+/// Whether `model` documents the keys of the CG solver sweep (cg_only, cg_tolerance, max_iterations).
+bool has_cg_sweep(const StressModelRegistry& models, const std::string& model) {
+  int found = 0;
+  for (const SettingDoc& d : models.settings(model))
+    found += d.key == "cg_only" || d.key == "cg_tolerance" || d.key == "max_iterations" ? 1 : 0;
+  return found == 3;
+}
+
+/// The settings of `name` swept on a structure: the default one, plus the CG solver knobs when `solver`
+/// and the model documents them (has_cg_sweep).
+Result<std::vector<Setting>> model_settings(const StressModelRegistry& models, const std::string& name,
+                                            const std::string& prefix, bool solver, const nlohmann::ordered_json& base,
+                                            const StressAccuracyOptions& o) {
   std::vector<Setting> out;
-  Result<std::unique_ptr<StressModel>> model = registries().stress_models.create(name);
+  Result<std::unique_ptr<StressModel>> model = models.create(name);
   if (!model) return model.error();
   nlohmann::ordered_json knobs = base;
   knobs["solver"] = "default";
   out.push_back({std::move(*model), prefix + "solver=default", knobs});
-  if (!solver || (name != "tresca" && name != "von-mises")) return out;
-  const Criterion criterion = name == "tresca" ? Criterion::tresca : Criterion::von_mises;
-  const auto add_cg = [&](double tolerance, int cap) {
-    SpringSolverSettings settings;
-    settings.direct_max_flops = -1.0;  // no block is factorised: CG everywhere
-    settings.cg_tolerance = tolerance;
-    settings.cg_max_iterations = cap;
+  if (!solver || !has_cg_sweep(models, name)) return out;
+  const auto add_cg = [&](double tolerance, int cap) -> Status {
+    const PluginSettings settings = {{"cg_only", true}, {"cg_tolerance", tolerance}, {"max_iterations", double(cap)}};
+    Result<std::unique_ptr<StressModel>> cg = models.create(name, settings);
+    if (!cg) return cg.error();
     nlohmann::ordered_json k = base;
     k["solver"] = "cg";
     k["cg_tolerance"] = tolerance;
     k["cg_max_iterations"] = cap;
-    out.push_back({std::make_unique<StrengthCriterionModel>(criterion, settings),
-                   prefix + fmt::format("solver=cg tol={:.0e} cap={}", tolerance, cap), k});
+    out.push_back({std::move(*cg), prefix + fmt::format("solver=cg tol={:.0e} cap={}", tolerance, cap), k});
+    return {};
   };
   const SpringSolverSettings defaults;
-  for (const double tolerance : o.cg_tolerances) add_cg(tolerance, defaults.cg_max_iterations);
-  for (const int cap : o.cg_iteration_caps) add_cg(1e-12, cap);
+  for (const double tolerance : o.cg_tolerances)
+    if (Status s = add_cg(tolerance, defaults.cg_max_iterations); !s) return s.error();
+  for (const int cap : o.cg_iteration_caps)
+    if (Status s = add_cg(1e-12, cap); !s) return s.error();
   return out;
 }
 
 }  // namespace
 
-Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAccuracyOptions& o) {
-  const std::vector<std::string> models = o.models.empty() ? registries().stress_models.names() : o.models;
+Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAccuracyOptions& o,
+                                                   const Registries& registries) {
+  const std::vector<std::string> models = o.models.empty() ? registries.stress_models.names() : o.models;
   Loads loads;
   loads.gravity = c.gravity;
   std::vector<Structure> structures;
@@ -185,7 +195,7 @@ Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAc
       structures.push_back(std::move(*s));
     }
   } else {
-    Result<CaseStructure> cs = build_case_structure(c);
+    Result<CaseStructure> cs = build_case_structure(c, registries);
     if (!cs) return cs.error();
     Result<Structure> s = make_structure(std::move(cs->graph), 0, std::nullopt, loads, c.material);
     if (!s) return Error{c.source.string() + ": " + s.error().message};
@@ -203,7 +213,7 @@ Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAc
         base["slabs"] = s.slabs;
         prefix = fmt::format("slabs={} ", s.slabs);
       }
-      Result<std::vector<Setting>> settings = settings_for(name, prefix, solver_sweep, base, o);
+      Result<std::vector<Setting>> settings = model_settings(registries.stress_models, name, prefix, solver_sweep, base, o);
       if (!settings) return settings.error();
       for (std::size_t k = 0; k < settings->size(); ++k) {
         if (k == 0 && !in_slab_sweep && s.slabs > 0) continue;  // default solver only on swept slab counts

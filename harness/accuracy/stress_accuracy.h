@@ -5,6 +5,7 @@
 /// against a reference solve of the same structure.
 
 #include "algorithms/core/result.h"
+#include "algorithms/registry/registries.h"
 #include "harness/accuracy/accuracy_point.h"
 #include "harness/cases/case.h"
 
@@ -26,8 +27,11 @@ struct StressAccuracyOptions {
 /// Runs the sweep on `c`. An analytic case (classify_beam_case) is rebuilt at each slab count and its
 /// headline error is the closed-form error; any other case uses its own pre-fractured structure and its
 /// headline error is `solver_error`, against the reference solve (Eigen's LDL^T on the whole system).
+/// Models come from `registries`; one that documents the CG keys (cg_only, cg_tolerance,
+/// max_iterations) is also swept over `cg_tolerances` and `cg_iteration_caps`.
 /// connection-count computes no forces: its points have no error, only the first-failure figures.
 /// Errors: an unknown model name, a structure that cannot be built.
-Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAccuracyOptions& options);
+Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAccuracyOptions& options,
+                                                   const Registries& registries);
 
 }  // namespace shatter

@@ -10,6 +10,7 @@
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
+#include "algorithms/core/plugin_settings.h"
 #include "algorithms/fracture/fracturer.h"
 #include "algorithms/stress/material.h"
 
@@ -89,7 +90,8 @@ struct PrefractureSpec {
   std::string fracturer = "plane-slice";  ///< registered fracturer name (unchecked here)
   int fragments = 10;                     ///< requested fragments, >= 1
   std::uint64_t seed = 1;                 ///< random seed
-  std::vector<Plane> planes;              ///< explicit cuts; when non-empty the three fields above are unused
+  std::vector<Plane> planes;              ///< explicit cuts; when non-empty the fields above are unused
+  PluginSettings settings;                ///< `settings` of the fracturer (checked by its factory)
 
   /// True when the pre-fracture is the explicit list of planes.
   [[nodiscard]] bool explicit_planes() const { return !planes.empty(); }
@@ -105,14 +107,22 @@ struct ImpactEvent {
 struct RuntimeSpec {
   std::string fracturer = "voronoi"; ///< registered fracturer name (unchecked here)
   int fragments = 10;                ///< requested fragments of the hit piece, >= 1
+  PluginSettings settings;           ///< `settings` of the fracturer (checked by its factory)
 };
 
-/// `stress`: the stress model and optional solver settings.
+/// `stress`: the stress model and its settings.
 struct StressSpec {
-  std::string model = "von-mises";            ///< registered stress model name (unchecked here)
-  std::optional<double> tolerance;            ///< relative residual of the static solve, > 0; solver default if unset
-  std::optional<int> max_iterations;          ///< iterations of the solve, >= 1; solver default if unset
+  std::string model = "von-mises";   ///< registered stress model name (unchecked here)
+  PluginSettings settings;           ///< `settings` of the model, e.g. the solver's tolerance (checked by its factory)
 };
+
+/// The settings a run gives plugin `chosen`: `settings` when `chosen` is the case's own `named`
+/// plugin, none (its defaults) when a command-line option picked another one.
+inline const PluginSettings& settings_for(std::string_view chosen, std::string_view named,
+                                          const PluginSettings& settings) {
+  static const PluginSettings none;
+  return chosen == named ? settings : none;
+}
 
 /// `grid`: the fragment counts swept by `shatterbench grid`.
 struct GridSpec {

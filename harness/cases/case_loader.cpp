@@ -5,6 +5,7 @@
 #include "harness/cases/case_mesh.h"
 #include "harness/cases/json_reader.h"
 #include "harness/cases/physical_range.h"
+#include "harness/cases/plugin_settings_json.h"
 #include "harness/limits.h"
 
 #include <fmt/format.h>
@@ -77,9 +78,9 @@ std::vector<Aabb> read_anchors(JsonReader& r, const json& v) {
 
 PrefractureSpec read_prefracture(JsonReader& r, const json& v) {
   PrefractureSpec p;
-  if (!r.object(v, "prefracture", {"fracturer", "fragments", "seed", "planes"})) return p;
+  if (!r.object(v, "prefracture", {"fracturer", "fragments", "seed", "settings", "planes"})) return p;
   if (v.contains("planes")) {
-    for (const char* key : {"fracturer", "fragments", "seed"})
+    for (const char* key : {"fracturer", "fragments", "seed", "settings"})
       if (v.contains(key)) {
         r.fail("prefracture", fmt::format("\"{}\" and \"planes\" are exclusive: give one", key));
         return p;
@@ -103,6 +104,7 @@ PrefractureSpec read_prefracture(JsonReader& r, const json& v) {
   read_name(r, v, "prefracture", "fracturer", p.fracturer);
   read_fragments(r, v, "prefracture", "fragments", p.fragments);
   r.read(v, "prefracture", "seed", p.seed);
+  read_plugin_settings(r, v, "prefracture", p.settings);
   return p;
 }
 
@@ -138,21 +140,18 @@ std::vector<ImpactEvent> read_impacts(JsonReader& r, const json& v, int frames) 
 
 RuntimeSpec read_runtime(JsonReader& r, const json& v) {
   RuntimeSpec s;
-  if (!r.object(v, "runtime", {"fracturer", "fragments"})) return s;
+  if (!r.object(v, "runtime", {"fracturer", "fragments", "settings"})) return s;
   read_name(r, v, "runtime", "fracturer", s.fracturer);
   read_fragments(r, v, "runtime", "fragments", s.fragments);
+  read_plugin_settings(r, v, "runtime", s.settings);
   return s;
 }
 
 StressSpec read_stress(JsonReader& r, const json& v) {
   StressSpec s;
-  if (!r.object(v, "stress", {"model", "tolerance", "max_iterations"})) return s;
+  if (!r.object(v, "stress", {"model", "settings"})) return s;
   read_name(r, v, "stress", "model", s.model);
-  double tolerance = 0.0;
-  if (r.read(v, "stress", "tolerance", tolerance) && r.positive("stress.tolerance", tolerance)) s.tolerance = tolerance;
-  int iterations = 0;
-  if (r.read(v, "stress", "max_iterations", iterations) && r.at_least("stress.max_iterations", iterations, 1))
-    s.max_iterations = iterations;
+  read_plugin_settings(r, v, "stress", s.settings);
   return s;
 }
 

@@ -1,7 +1,6 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
-#include "algorithms/fracture/fem_lite/fem_lite_settings.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 #include "harness/accuracy/accuracy_output.h"
 #include "harness/accuracy/fracture_accuracy.h"
 #include "harness/accuracy/stress_accuracy.h"
@@ -18,6 +17,7 @@
 #include <chrono>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 #include <system_error>
@@ -42,19 +42,29 @@ bool wants(const std::vector<std::string>& families, const char* family) {
   return std::find(families.begin(), families.end(), family) != families.end();
 }
 
-int run_accuracy(const AccuracyOptions& o) {
+int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   // Everything is checked before anything runs, so bad input writes nothing.
   for (const std::string& f : o.families)
     if (f != "fracture" && f != "stress") return fail_input("--family: must be fracture or stress, got '" + f + "'");
   for (const std::string& name : o.fracturers) {
-    if (name == "cgal-clip") return fail_input("--fracturer: cgal-clip is the exact reference the others are measured against");
-    if (auto f = registries().fracturers.create(name); !f) return fail_input("--fracturer: " + f.error().message);
+    auto f = registries.fracturers.create(name);
+    if (!f) return fail_input("--fracturer: " + f.error().message);
+    if ((*f)->exact_reference())
+      return fail_input("--fracturer: " + name + " is the exact reference the others are measured against");
   }
   for (const std::string& name : o.models)
-    if (auto m = registries().stress_models.create(name); !m) return fail_input("--model: " + m.error().message);
-  for (const int r : o.resolutions)
-    if (r < 2 || r > kFemLiteMaxResolution)
-      return fail_input(fmt::format("--resolution: must be in [2, {}], got {}", kFemLiteMaxResolution, r));
+    if (auto m = registries.stress_models.create(name); !m) return fail_input("--model: " + m.error().message);
+  // --resolution sets the sweep of every fracturer whose accuracy knob is `resolution`; each value is
+  // checked by that fracturer's own settings.
+  std::map<std::string, std::vector<double>, std::less<>> sweeps;
+  sweeps["resolution"].assign(o.resolutions.begin(), o.resolutions.end());
+  for (const std::string& name : o.fracturers.empty() ? default_accuracy_fracturers(registries) : o.fracturers) {
+    const auto knob = accuracy_knob(registries, name, sweeps);
+    if (!knob || knob->first != "resolution") continue;
+    for (const double r : knob->second)
+      if (auto f = registries.fracturers.create(name, {{"resolution", r}}); !f)
+        return fail_input("--resolution: " + f.error().message);
+  }
   for (const int n : o.slabs)
     if (n < 2 || n % 2 != 0 || n > 4096) return fail_input(fmt::format("--slabs: must be even, 2 to 4096, got {}", n));
   std::vector<Case> cases;
@@ -70,7 +80,7 @@ int run_accuracy(const AccuracyOptions& o) {
   FractureAccuracyOptions fo;
   fo.fracturers = o.fracturers;
   fo.fragments = o.fragments;
-  fo.fem_resolutions = o.resolutions;
+  fo.sweeps = sweeps;
   fo.repetitions = o.repetitions;
   StressAccuracyOptions so;
   so.models = o.models;
@@ -89,12 +99,12 @@ int run_accuracy(const AccuracyOptions& o) {
       if (!solid) return fail_input(solid.error().message);
       std::optional<Impact> impact;
       if (!c.impacts.empty()) impact = c.impacts.front().impact;
-      Result<std::vector<AccuracyPoint>> p = fracture_accuracy(c.name, *solid, impact, fo);
+      Result<std::vector<AccuracyPoint>> p = fracture_accuracy(c.name, *solid, impact, fo, registries);
       if (!p) return fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
     if (wants(o.families, "stress")) {
-      Result<std::vector<AccuracyPoint>> p = stress_accuracy(c, so);
+      Result<std::vector<AccuracyPoint>> p = stress_accuracy(c, so, registries);
       if (!p) return fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
@@ -127,7 +137,7 @@ int run_accuracy(const AccuracyOptions& o) {
 
 }  // namespace
 
-void add_accuracy_command(CLI::App& app, int& exit_code) {
+void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto o = std::make_shared<AccuracyOptions>();
   CLI::App* cmd = app.add_subcommand(
       "accuracy", "Time every fracturer and stress model over its knobs against its error; mark the Pareto front");
@@ -138,14 +148,14 @@ void add_accuracy_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
   cmd->add_option("--family", o->families, "Families to run: fracture, stress (default both)");
-  cmd->add_option("--fracturer", o->fracturers, "Fracturers (default: every registered one but cgal-clip)");
+  cmd->add_option("--fracturer", o->fracturers, "Fracturers (default: every registered one but the exact reference, cgal-clip)");
   cmd->add_option("--model", o->models, "Stress models (default: every registered one)");
   cmd->add_option("--fragments", o->fragments, "Requested fragment counts")
       ->check(CLI::Range(1, kMaxFragments))
       ->capture_default_str();
-  cmd->add_option("--resolution", o->resolutions, "fem-lite grid resolutions")->capture_default_str();
+  cmd->add_option("--resolution", o->resolutions, "Values of the resolution knob (fem-lite's grid cells along the longest axis)")->capture_default_str();
   cmd->add_option("--slabs", o->slabs, "Slab counts of the analytic beam and column cases (even)")->capture_default_str();
-  cmd->callback([o, &exit_code] { exit_code = run_accuracy(*o); });
+  cmd->callback([o, &exit_code, &registries] { exit_code = run_accuracy(*o, registries); });
 }
 
 }  // namespace shatter::cli

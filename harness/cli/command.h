@@ -2,6 +2,8 @@
 /// The CLI's commands. Each command file adds one subcommand to the app and sets the exit code when
 /// it runs: 0 ok, 1 a gate failed, 2 bad input or usage (with one line on stderr).
 
+#include "algorithms/registry/registries.h"
+
 #include <CLI/CLI.hpp>
 
 #include <string>
@@ -24,25 +26,27 @@ int fail_check(std::string_view message);
 /// line each; "<subject>: " left out when `subject` is empty) and returns the number of lines printed.
 int print_failed_checks(std::string_view subject, const std::vector<std::string>& failed);
 
+/// Commands that create plugins take the registries they look them up in (kept by reference: they
+/// must outlive the app's parse).
 /// `shatterbench list`.
-void add_list_command(CLI::App& app, int& exit_code);
+void add_list_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench fracture`.
-void add_fracture_command(CLI::App& app, int& exit_code);
+void add_fracture_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench stress`.
-void add_stress_command(CLI::App& app, int& exit_code);
+void add_stress_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench grid`.
-void add_grid_command(CLI::App& app, int& exit_code);
+void add_grid_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench compare`.
 void add_compare_command(CLI::App& app, int& exit_code);
 /// `shatterbench merge`.
 void add_merge_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
-void add_table_command(CLI::App& app, int& exit_code);
+void add_table_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench accuracy`.
-void add_accuracy_command(CLI::App& app, int& exit_code);
+void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench report`.
 void add_report_command(CLI::App& app, int& exit_code);
 /// `shatterbench stability`.
-void add_stability_command(CLI::App& app, int& exit_code);
+void add_stability_command(CLI::App& app, int& exit_code, const Registries& registries);
 
 }  // namespace shatter::cli

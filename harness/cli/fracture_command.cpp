@@ -1,5 +1,5 @@
 #include "algorithms/fracture/fracture_limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
 #include "harness/output/output_targets.h"
@@ -28,11 +28,11 @@ struct FractureOptions {
   double radius = 0.0;
 };
 
-int run_fracture(const FractureOptions& o) {
+int run_fracture(const FractureOptions& o, const Registries& registries) {
   if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
   Result<Solid> solid = load_solid(o.mesh);
   if (!solid) return fail_input(solid.error().message);
-  Result<std::unique_ptr<Fracturer>> fracturer = registries().fracturers.create(o.algorithm);
+  Result<std::unique_ptr<Fracturer>> fracturer = registries.fracturers.create(o.algorithm);
   if (!fracturer) return fail_input("--algo: " + fracturer.error().message);
 
   FractureParams params;
@@ -82,7 +82,7 @@ int run_fracture(const FractureOptions& o) {
 
 }  // namespace
 
-void add_fracture_command(CLI::App& app, int& exit_code) {
+void add_fracture_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto options = std::make_shared<FractureOptions>();
   CLI::App* cmd = app.add_subcommand("fracture", "Fracture one mesh and print time and error figures as JSON");
   cmd->add_option("--mesh", options->mesh, "Input solid (.off or .obj), closed and oriented")->required();
@@ -106,7 +106,7 @@ void add_fracture_command(CLI::App& app, int& exit_code) {
           },
           "NUMBER >= 0"))
       ->needs("--impact");
-  cmd->callback([options, &exit_code] { exit_code = run_fracture(*options); });
+  cmd->callback([options, &exit_code, &registries] { exit_code = run_fracture(*options, registries); });
 }
 
 }  // namespace shatter::cli

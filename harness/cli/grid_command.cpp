@@ -166,7 +166,7 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   return grid;
 }
 
-int run_grid_command(const GridCommandOptions& o) {
+int run_grid_command(const GridCommandOptions& o, const Registries& registries) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
 
@@ -211,7 +211,7 @@ int run_grid_command(const GridCommandOptions& o) {
           "one process, without a time limit)");
     options.cell_timeout_s = *o.timeout_s;
   }
-  if (Status s = check_grid_options(*c, options); !s) return fail_input(s.error().message);
+  if (Status s = check_grid_options(*c, options, registries); !s) return fail_input(s.error().message);
 
   std::filesystem::path json_path = o.json;
   if (o.update_baseline) {
@@ -261,7 +261,7 @@ int run_grid_command(const GridCommandOptions& o) {
     if (ec) return fail_input("--metric instructions: cannot find the running executable: " + ec.message());
     grid = run_under_callgrind(o, exe);
   } else {
-    grid = run_grid(*prepared, options);
+    grid = run_grid(*prepared, options, registries);
   }
   if (!grid) return fail_input(grid.error().message);
 
@@ -326,7 +326,7 @@ int run_grid_command(const GridCommandOptions& o) {
 
 }  // namespace
 
-void add_grid_command(CLI::App& app, int& exit_code) {
+void add_grid_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto o = std::make_shared<GridCommandOptions>();
   CLI::App* cmd = app.add_subcommand(
       "grid", "Run a case over the pre-fracture x runtime grid, time every frame and stage, gate on the budget");
@@ -361,7 +361,7 @@ void add_grid_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--update-baseline", o->update_baseline,
                 "Write the results as the case's baseline (BASELINE-DIR/<case>.json, or --json); the only way a baseline changes");
   cmd->add_option("--baseline-dir", o->baseline_dir, "Baseline folder (default results/baselines)");
-  cmd->callback([o, &exit_code] { exit_code = run_grid_command(*o); });
+  cmd->callback([o, &exit_code, &registries] { exit_code = run_grid_command(*o, registries); });
 }
 
 }  // namespace shatter::cli

@@ -1,4 +1,4 @@
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 #include "harness/cases/case_library.h"
 #include "harness/cli/command.h"
 
@@ -6,16 +6,28 @@
 
 namespace shatter::cli {
 
-void add_list_command(CLI::App& app, int& exit_code) {
-  CLI::App* cmd = app.add_subcommand("list", "List the registered fracturers, stress models and built-in cases");
-  cmd->callback([&exit_code] {
-    const Registries& r = registries();
+namespace {
+
+/// Prints one registered plugin: its name and description, then one line per documented setting.
+void print_plugin(const std::string& name, const std::string& description, std::span<const SettingDoc> settings) {
+  fmt::print("  {:<18} {}\n", name, description);
+  for (const SettingDoc& s : settings)
+    fmt::print("    {:<20} {:<8} default {:<10} range {:<16} {}\n", "settings." + s.key, s.unit.empty() ? "-" : s.unit,
+               s.default_text, s.range, s.description);
+}
+
+}  // namespace
+
+void add_list_command(CLI::App& app, int& exit_code, const Registries& r) {
+  CLI::App* cmd = app.add_subcommand(
+      "list", "List the registered fracturers, stress models (each with its settings) and built-in cases");
+  cmd->callback([&exit_code, &r] {
     fmt::print("fracturers:\n");
     for (const std::string& name : r.fracturers.names())
-      fmt::print("  {:<18} {}\n", name, r.fracturers.description(name));
+      print_plugin(name, r.fracturers.description(name), r.fracturers.settings(name));
     fmt::print("stress models:\n");
     for (const std::string& name : r.stress_models.names())
-      fmt::print("  {:<18} {}\n", name, r.stress_models.description(name));
+      print_plugin(name, r.stress_models.description(name), r.stress_models.settings(name));
     fmt::print("built-in cases:\n");
     for (const BuiltinCase& c : list_builtin_cases()) fmt::print("  {:<18} {}\n", c.name, c.description);
     exit_code = exit_ok;

@@ -1,61 +1,10 @@
 /// shatterbench: benchmark and regression harness for real-time destruction algorithms.
 
-#include "harness/cli/command.h"
-#include "harness/cli/numeric_flags.h"
-
-#include <cerrno>
-#include <cstdio>
-#include <cstring>
-#include <exception>
-#include <iostream>
-#include <string>
+#include "algorithms/registry/registries.h"
+#include "harness/cli/run_cli.h"
 
 int main(int argc, char** argv) {
-  using namespace shatter::cli;
-  CLI::App app{"shatterbench: benchmark and regression harness for real-time destruction algorithms",
-               "shatterbench"};
-  app.require_subcommand(1);
-  int exit_code = exit_ok;
-  add_list_command(app, exit_code);
-  add_fracture_command(app, exit_code);
-  add_stress_command(app, exit_code);
-  add_grid_command(app, exit_code);
-  add_compare_command(app, exit_code);
-  add_merge_command(app, exit_code);
-  add_table_command(app, exit_code);
-  add_accuracy_command(app, exit_code);
-  add_report_command(app, exit_code);
-  add_stability_command(app, exit_code);
-  check_numeric_flags(app);  // every numeric flag read strictly: no nan, inf, wrap or saturation
-  if (argc > 1 && argv[1][0] != '-') {
-    // CLI11 would only say that a subcommand is required: name the word and the commands instead.
-    std::string known;
-    bool found = false;
-    for (const CLI::App* sub : app.get_subcommands([](CLI::App*) { return true; })) {
-      known += (known.empty() ? "" : ", ") + sub->get_name();
-      found = found || sub->get_name() == argv[1];
-    }
-    if (!found) return fail_input(std::string("unknown command \"") + argv[1] + "\" (commands: " + known + ")");
-  }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp&) {
-    std::cout << app.help();
-    return exit_ok;
-  } catch (const CLI::CallForAllHelp&) {
-    std::cout << app.help("", CLI::AppFormatMode::All);
-    return exit_ok;
-  } catch (const CLI::ParseError& e) {
-    // Subcommand --help arrives here too (CLI11 raises CallForHelp from the subcommand).
-    if (e.get_exit_code() == 0) return app.exit(e);
-    return fail_input(e.what());
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "shatterbench: internal error: %s\n", e.what());
-    return 3;
-  }
-  // Output that did not reach its destination (a full disk, a closed pipe) is not a success.
-  std::cout.flush();
-  if (!std::cout || std::fflush(stdout) != 0 || std::ferror(stdout))
-    return fail_input(std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
-  return exit_code;
+  shatter::Registries registries;
+  shatter::register_all(registries);
+  return shatter::run_cli(argc, argv, registries);
 }

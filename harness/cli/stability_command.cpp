@@ -1,4 +1,4 @@
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 #include "harness/cli/command.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
@@ -36,10 +36,10 @@ Result<std::vector<std::string>> pick(const std::string& wanted, const std::vect
   return Error{flag + ": unknown name '" + wanted + "' (known: all, none, " + list + ")"};
 }
 
-int run_stability_command(const StabilityCommandOptions& o) {
-  Result<std::vector<std::string>> fracturers = pick(o.algorithm, registries().fracturers.names(), "--algo");
+int run_stability_command(const StabilityCommandOptions& o, const Registries& registries) {
+  Result<std::vector<std::string>> fracturers = pick(o.algorithm, registries.fracturers.names(), "--algo");
   if (!fracturers) return fail_input(fracturers.error().message);
-  Result<std::vector<std::string>> models = pick(o.model, registries().stress_models.names(), "--model");
+  Result<std::vector<std::string>> models = pick(o.model, registries.stress_models.names(), "--model");
   if (!models) return fail_input(models.error().message);
   const std::vector<std::string> known = hazard_names();
   for (const std::string& h : o.hazards) {
@@ -57,7 +57,7 @@ int run_stability_command(const StabilityCommandOptions& o) {
   options.quick = o.quick;
   options.time_limit_s = o.timeout_s;
   options.hazards = o.hazards;
-  const std::vector<HazardResult> results = run_stability(options, [](const HazardResult& r) {
+  const std::vector<HazardResult> results = run_stability(options, registries, [](const HazardResult& r) {
     std::cerr << "stability: " << r.hazard << " / " << r.algorithm << ": " << outcome_tag(r.outcome) << '\n';
   });
   std::cout << stability_table(results);
@@ -72,7 +72,7 @@ int run_stability_command(const StabilityCommandOptions& o) {
 
 }  // namespace
 
-void add_stability_command(CLI::App& app, int& exit_code) {
+void add_stability_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto options = std::make_shared<StabilityCommandOptions>();
   CLI::App* cmd = app.add_subcommand(
       "stability", "Run the hazard battery on fracturers and stress models; exit 1 on CRASH, TIMEOUT or INVALID_OUTPUT");
@@ -84,7 +84,7 @@ void add_stability_command(CLI::App& app, int& exit_code) {
       ->check(CLI::Range(0.1, 86400.0))
       ->capture_default_str();
   cmd->add_option("--hazard", options->hazards, "Only these hazard cases (repeatable; default all)");
-  cmd->callback([options, &exit_code] { exit_code = run_stability_command(*options); });
+  cmd->callback([options, &exit_code, &registries] { exit_code = run_stability_command(*options, registries); });
 }
 
 }  // namespace shatter::cli

@@ -1,4 +1,4 @@
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
 #include "harness/cli/command.h"
@@ -80,13 +80,13 @@ void print_table(const std::string& case_name, const std::string& model, const S
              p.report.converged ? "" : " (NOT converged)");
 }
 
-int run_stress(const StressOptions& o) {
+int run_stress(const StressOptions& o, const Registries& registries) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
   const std::string model_name = o.model.empty() ? c->stress.model : o.model;
-  auto model = registries().stress_models.create(model_name);
+  auto model = registries.stress_models.create(model_name, settings_for(model_name, c->stress.model, c->stress.settings));
   if (!model) return fail_input((o.model.empty() ? c->name + ": stress.model: " : "--model: ") + model.error().message);
-  Result<CaseStructure> structure = build_case_structure(*c);
+  Result<CaseStructure> structure = build_case_structure(*c, registries);
   if (!structure) return fail_input(structure.error().message);
   Loads loads;
   loads.gravity = c->gravity;
@@ -103,7 +103,7 @@ int run_stress(const StressOptions& o) {
 
 }  // namespace
 
-void add_stress_command(CLI::App& app, int& exit_code) {
+void add_stress_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto options = std::make_shared<StressOptions>();
   CLI::App* cmd = app.add_subcommand(
       "stress", "Pre-fracture a case, solve its structure, break what fails and report bonds and falling clusters");
@@ -111,7 +111,7 @@ void add_stress_command(CLI::App& app, int& exit_code) {
       ->required();
   cmd->add_option("--model", options->model, "Stress model (default: the case's stress.model)");
   cmd->add_flag("--json", options->json, "Print one JSON object instead of a table");
-  cmd->callback([options, &exit_code] { exit_code = run_stress(*options); });
+  cmd->callback([options, &exit_code, &registries] { exit_code = run_stress(*options, registries); });
 }
 
 }  // namespace shatter::cli

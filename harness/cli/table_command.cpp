@@ -1,6 +1,6 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
 #include "harness/metrics/fracture_acceptance.h"
@@ -34,8 +34,7 @@ double median(std::vector<double> v) {
   return n == 0 ? 0.0 : (n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]));
 }
 
-int run_table(TableOptions o) {
-  const Registries& r = registries();
+int run_table(TableOptions o, const Registries& r) {
   if (o.algorithms.empty()) o.algorithms = r.fracturers.names();
   std::vector<std::unique_ptr<Fracturer>> fracturers;
   for (const std::string& name : o.algorithms) {
@@ -118,7 +117,7 @@ int run_table(TableOptions o) {
 
 }  // namespace
 
-void add_table_command(CLI::App& app, int& exit_code) {
+void add_table_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto options = std::make_shared<TableOptions>();
   CLI::App* cmd = app.add_subcommand(
       "table", "Fracture meshes with every fracturer and print a Markdown table of time and error figures");
@@ -130,7 +129,7 @@ void add_table_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--repetitions", options->repetitions, "Runs per cell, seeds 1..R; the median time is shown")
       ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
-  cmd->callback([options, &exit_code] { exit_code = run_table(*options); });
+  cmd->callback([options, &exit_code, &registries] { exit_code = run_table(*options, registries); });
 }
 
 }  // namespace shatter::cli

@@ -3,7 +3,6 @@
 #include "harness/grid/cell_checks.h"
 
 #include "algorithms/fracture/fracture_limits.h"
-#include "algorithms/register_all.h"
 #include "harness/grid/calibration.h"
 #include "harness/grid/isolated_cell.h"
 #include "harness/limits.h"
@@ -224,20 +223,20 @@ bool GridResult::passed() const {
                      });
 }
 
-Status check_grid_options(const Case& c, const GridOptions& o) {
-  const auto& reg = registries();
+Status check_grid_options(const Case& c, const GridOptions& o, const Registries& reg) {
   if (!o.fracturer.empty()) {
     if (auto f = reg.fracturers.create(o.fracturer); !f) return Error{"--fracturer: " + f.error().message};
   } else {
     if (!c.prefracture.explicit_planes())
-      if (auto f = reg.fracturers.create(c.prefracture.fracturer); !f)
+      if (auto f = reg.fracturers.create(c.prefracture.fracturer, c.prefracture.settings); !f)
         return Error{c.name + ": prefracture.fracturer: " + f.error().message};
-    if (auto f = reg.fracturers.create(c.runtime.fracturer); !f)
+    if (auto f = reg.fracturers.create(c.runtime.fracturer, c.runtime.settings); !f)
       return Error{c.name + ": runtime.fracturer: " + f.error().message};
   }
   if (!o.stress_model.empty()) {
-    if (auto m = reg.stress_models.create(o.stress_model); !m) return Error{"--stress: " + m.error().message};
-  } else if (auto m = reg.stress_models.create(c.stress.model); !m) {
+    if (auto m = reg.stress_models.create(o.stress_model, settings_for(o.stress_model, c.stress.model, c.stress.settings)); !m)
+      return Error{"--stress: " + m.error().message};
+  } else if (auto m = reg.stress_models.create(c.stress.model, c.stress.settings); !m) {
     return Error{c.name + ": stress.model: " + m.error().message};
   }
   if (!std::isfinite(o.budget_ms) || o.budget_ms < 0.0)
@@ -277,7 +276,8 @@ GridCell grid_cell_settings(const Case& c, const GridOptions& o, int p, int r) {
   return cell;
 }
 
-Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, int p, int r, int& done, int total) {
+Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, const Registries& registries, int p,
+                               int r, int& done, int total) {
   const Case& c = prepared.spec;
   GridCell cell = grid_cell_settings(c, o, p, r);
   const double budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
@@ -299,7 +299,7 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     run.schedule = o.schedule.value_or(c.schedule.mode);
     instruction_marks::set_run(p, r, rep);
     const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
-    Result<RunResult> result = run_destruction(prepared, run);
+    Result<RunResult> result = run_destruction(prepared, run, registries);
     if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
     cell.samples.push_back(sample_of(*result));
     if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
@@ -316,9 +316,9 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
   return cell;
 }
 
-Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) {
+Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, const Registries& registries) {
   const Case& c = prepared.spec;
-  if (Status s = check_grid_options(c, o); !s) return s.error();
+  if (Status s = check_grid_options(c, o, registries); !s) return s.error();
   const auto start = std::chrono::steady_clock::now();
   // An explicit-plane pre-fracture has one fragment count: the grid's pre-fracture axis collapses to it.
   const std::vector<int> prefracture = prefracture_counts(c, o);
@@ -347,12 +347,12 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
       if (o.cell_timeout_s > 0.0) {
         // The child runs and times the cell; its progress calls count on from `done` in its own copy.
         const int before = done;
-        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, p, r, done, total); },
+        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, registries, p, r, done, total); },
                                  grid_cell_settings(c, o, p, r), o.cell_timeout_s, o.latency_budget_ms);
         done = before + o.repetitions;
         if (o.progress) o.progress(done, total);
       } else {
-        cell = run_grid_cell(prepared, o, p, r, done, total);
+        cell = run_grid_cell(prepared, o, registries, p, r, done, total);
       }
       if (!cell) return cell.error();
       out.cells.push_back(std::move(*cell));

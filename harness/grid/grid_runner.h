@@ -160,7 +160,8 @@ struct GridResult {
 /// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1, the cell timeout
 /// finite and >= 0, and the limits of harness/limits.h (repetitions, frames, fragment counts, cells,
 /// pieces per run, frames recorded).
-Status check_grid_options(const Case& c, const GridOptions& options);
+/// Plugins are looked up in `registries`.
+Status check_grid_options(const Case& c, const GridOptions& options, const Registries& registries);
 
 /// The cell `p` x `r` of a grid with `options`, its settings filled in and nothing run: what a cell
 /// that failed reports.
@@ -168,8 +169,8 @@ GridCell grid_cell_settings(const Case& c, const GridOptions& options, int p, in
 
 /// Runs one cell of the grid, every repetition in this process. `done` counts the runs finished (for
 /// `options.progress`, out of `total`).
-Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& options, int p, int r, int& done,
-                               int total);
+Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& options, const Registries& registries,
+                               int p, int r, int& done, int total);
 
 /// Fills `cell`'s schedule summary (latency, bodies, particles: medians over its samples) and judges
 /// its latency against `latency_budget_ms`.
@@ -187,6 +188,6 @@ void add_cell_error(CellError& into, const CellError& other);
 void add_cell_stages(GridCell& cell, const std::vector<std::string>& run, const std::vector<StageSkip>& skipped);
 
 /// Runs the grid of `prepared` (options checked by check_grid_options).
-Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options);
+Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options, const Registries& registries);
 
 }  // namespace shatter

@@ -1,7 +1,6 @@
 #include "harness/pipeline/case_structure.h"
 
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/register_all.h"
 #include "harness/cases/case_mesh.h"
 
 #include <string>
@@ -15,13 +14,13 @@ bool overlaps(const Aabb& a, const Aabb& b) {
 
 }  // namespace
 
-Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid) {
+Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid, const Registries& registries) {
   if (c.prefracture.explicit_planes()) {
     auto fragments = PlaneSliceFracturer().fracture_by_planes(solid.mesh, c.prefracture.planes);
     if (!fragments) return Error{c.name + ": prefracture.planes: " + fragments.error().message};
     return fragments;
   }
-  auto fracturer = registries().fracturers.create(c.prefracture.fracturer);
+  auto fracturer = registries.fracturers.create(c.prefracture.fracturer, c.prefracture.settings);
   if (!fracturer) return Error{c.name + ": prefracture.fracturer: " + fracturer.error().message};
   FractureParams params;
   params.fragments = c.prefracture.fragments;
@@ -31,10 +30,10 @@ Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid
   return fragments;
 }
 
-Result<CaseStructure> build_case_structure(const Case& c) {
+Result<CaseStructure> build_case_structure(const Case& c, const Registries& registries) {
   Result<Solid> solid = build_case_solid(c);
   if (!solid) return solid.error();
-  Result<std::vector<Fragment>> fragments = prefracture_case(c, *solid);
+  Result<std::vector<Fragment>> fragments = prefracture_case(c, *solid, registries);
   if (!fragments) return fragments.error();
 
   std::vector<Aabb> anchors;

@@ -4,6 +4,7 @@
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
+#include "algorithms/registry/registries.h"
 #include "harness/cases/case.h"
 #include "harness/cases/load_solid.h"
 
@@ -21,9 +22,10 @@ struct CaseStructure {
 /// Pre-fractures `c`'s solid (explicit planes with the plane-slice kernel, or the named fracturer) and
 /// builds its support graph at the case's density. Errors name the case key: an unknown fracturer
 /// (`prefracture.fracturer`), an anchor region that touches no fragment (`anchors[i]`).
-Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid);
+/// The fracturer is created from `registries` with the case's `prefracture.settings`.
+Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid, const Registries& registries);
 
 /// The whole structure of `c`.
-Result<CaseStructure> build_case_structure(const Case& c);
+Result<CaseStructure> build_case_structure(const Case& c, const Registries& registries);
 
 }  // namespace shatter

@@ -3,7 +3,6 @@
 #include "algorithms/bonds/graph_components.h"
 #include "algorithms/fracture/local_fracture.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/pipeline/debris_field.h"
@@ -79,7 +78,8 @@ struct PendingEvent {
 /// Everything a run keeps between frames.
 class Run {
  public:
-  Run(const PreparedCase& prepared, const RunOptions& options) : c_(prepared.spec), solid_(prepared.solid), o_(options) {}
+  Run(const PreparedCase& prepared, const RunOptions& options, const Registries& registries)
+      : c_(prepared.spec), solid_(prepared.solid), o_(options), registries_(registries) {}
 
   Result<RunResult> execute();
 
@@ -101,6 +101,7 @@ class Run {
   const Case& c_;
   const Solid& solid_;
   const RunOptions& o_;
+  const Registries& registries_;
   StagePlan plan_;
   RunResult r_;
 
@@ -127,19 +128,19 @@ class Run {
 };
 
 Status Run::create_algorithms() {
-  const auto& reg = registries();
+  const Registries& reg = registries_;
   if (!c_.prefracture.explicit_planes()) {
     const std::string& name = o_.prefracture_fracturer.empty() ? c_.prefracture.fracturer : o_.prefracture_fracturer;
-    auto f = reg.fracturers.create(name);
+    auto f = reg.fracturers.create(name, settings_for(name, c_.prefracture.fracturer, c_.prefracture.settings));
     if (!f) return Error{c_.name + ": prefracture.fracturer: " + f.error().message};
     prefracturer_ = std::move(*f);
   }
   const std::string& runtime = o_.runtime_fracturer.empty() ? c_.runtime.fracturer : o_.runtime_fracturer;
-  auto rf = reg.fracturers.create(runtime);
+  auto rf = reg.fracturers.create(runtime, settings_for(runtime, c_.runtime.fracturer, c_.runtime.settings));
   if (!rf) return Error{c_.name + ": runtime.fracturer: " + rf.error().message};
   runtime_fracturer_ = std::move(*rf);
   const std::string& model = o_.stress_model.empty() ? c_.stress.model : o_.stress_model;
-  auto m = reg.stress_models.create(model);
+  auto m = reg.stress_models.create(model, settings_for(model, c_.stress.model, c_.stress.settings));
   if (!m) return Error{c_.name + ": stress.model: " + m.error().message};
   model_ = std::move(*m);
   runtime_fragments_ = o_.runtime_fragments > 0 ? o_.runtime_fragments : c_.runtime.fragments;
@@ -154,6 +155,8 @@ Status Run::prefracture() {
     key.planes = c_.prefracture.planes;
   } else {
     key.fracturer = std::string(prefracturer_->name());
+    const PluginSettings& settings = settings_for(key.fracturer, c_.prefracture.fracturer, c_.prefracture.settings);
+    if (!settings.empty()) key.fracturer += " " + settings_text(settings);
     key.fragments = o_.prefracture_fragments > 0 ? o_.prefracture_fragments : c_.prefracture.fragments;
     key.seed = c_.prefracture.seed + o_.repetition;
   }
@@ -662,8 +665,9 @@ Result<PreparedCase> prepare_case(Case c) {
   return PreparedCase{std::move(c), std::move(*solid)};
 }
 
-Result<RunResult> run_destruction(const PreparedCase& prepared, const RunOptions& options) {
-  return Run(prepared, options).execute();
+Result<RunResult> run_destruction(const PreparedCase& prepared, const RunOptions& options,
+                                  const Registries& registries) {
+  return Run(prepared, options, registries).execute();
 }
 
 }  // namespace shatter

@@ -27,6 +27,7 @@
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
+#include "algorithms/registry/registries.h"
 #include "algorithms/stress/stress_model.h"
 #include "harness/cases/case.h"
 #include "harness/cases/load_solid.h"
@@ -128,6 +129,9 @@ struct RunResult {
 
 /// Runs `prepared` once with `options`. Errors (unknown algorithm names with the case key or option,
 /// an anchor region touching no fragment, a failed fracture or solve) name what failed.
-Result<RunResult> run_destruction(const PreparedCase& prepared, const RunOptions& options);
+/// Its fracturers and stress model are created from `registries` (with the case's settings for the
+/// case's own plugins).
+Result<RunResult> run_destruction(const PreparedCase& prepared, const RunOptions& options,
+                                  const Registries& registries);
 
 }  // namespace shatter

@@ -5,7 +5,6 @@
 #include "algorithms/core/primitives.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/register_all.h"
 #include "harness/metrics/fracture_metrics.h"
 
 #include <algorithm>
@@ -178,12 +177,12 @@ std::vector<FractureHazard> fracture_hazards(bool quick) {
 }
 
 HazardResult run_fracture_hazard(const FractureHazard& h, const std::string& algorithm,
-                                 const FractureCheckLimits& limits) {
+                                 const Registries& registries, const FractureCheckLimits& limits) {
   HazardResult r;
   r.hazard = h.name;
   r.algorithm = algorithm;
   r.kind = "fracture";
-  Result<std::unique_ptr<Fracturer>> fracturer = registries().fracturers.create(algorithm);
+  Result<std::unique_ptr<Fracturer>> fracturer = registries.fracturers.create(algorithm);
   if (!fracturer) {
     r.outcome = HazardOutcome::rejected_input;
     r.detail = fracturer.error().message;

@@ -6,6 +6,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/fracturer.h"
+#include "algorithms/registry/registries.h"
 #include "harness/stability/hazard_outcome.h"
 
 #include <string>
@@ -38,7 +39,8 @@ struct FractureCheckLimits {
 /// Runs `hazard` on the fracturer named `algorithm` twice (determinism) and checks the output: every
 /// fragment closed, oriented and finite, volume and partition error within `limits`, both runs equal
 /// bit for bit. Runs in the calling process: the battery isolates it (isolated_run.h).
+/// The fracturer is created from `registries` with its default settings.
 HazardResult run_fracture_hazard(const FractureHazard& hazard, const std::string& algorithm,
-                                 const FractureCheckLimits& limits = {});
+                                 const Registries& registries, const FractureCheckLimits& limits = {});
 
 }  // namespace shatter

@@ -40,7 +40,7 @@ HazardResult isolated(const std::function<HazardResult()>& work, const std::stri
 
 }  // namespace
 
-std::vector<HazardResult> run_stability(const StabilityOptions& o,
+std::vector<HazardResult> run_stability(const StabilityOptions& o, const Registries& registries,
                                         const std::function<void(const HazardResult&)>& progress) {
   std::vector<HazardResult> out;
   const auto add = [&](HazardResult r) {
@@ -51,13 +51,13 @@ std::vector<HazardResult> run_stability(const StabilityOptions& o,
     for (const FractureHazard& h : fracture_hazards(o.quick)) {
       if (!selected(o, h.name)) continue;
       for (const std::string& algo : o.fracturers)
-        add(isolated([&] { return run_fracture_hazard(h, algo); }, h.name, algo, "fracture", o.time_limit_s));
+        add(isolated([&] { return run_fracture_hazard(h, algo, registries); }, h.name, algo, "fracture", o.time_limit_s));
     }
   if (!o.models.empty())
     for (const StressHazard& h : stress_hazards(o.quick)) {
       if (!selected(o, h.name)) continue;
       for (const std::string& model : o.models)
-        add(isolated([&] { return run_stress_hazard(h, model); }, h.name, model, "stress", o.time_limit_s));
+        add(isolated([&] { return run_stress_hazard(h, model, registries); }, h.name, model, "stress", o.time_limit_s));
     }
   return out;
 }

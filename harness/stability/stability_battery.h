@@ -2,6 +2,7 @@
 /// The stability battery: every fracture hazard on every selected fracturer and every stress hazard on
 /// every selected stress model, each in its own forked child with a time limit (docs/stability.md).
 
+#include "algorithms/registry/registries.h"
 #include "harness/stability/hazard_outcome.h"
 
 #include <functional>
@@ -19,8 +20,9 @@ struct StabilityOptions {
   std::vector<std::string> hazards;     ///< only these hazard names (empty: all)
 };
 
-/// Runs the battery; `progress` (may be empty) sees each result as it arrives.
-std::vector<HazardResult> run_stability(const StabilityOptions& options,
+/// Runs the battery with the plugins of `registries`; `progress` (may be empty) sees each result as it
+/// arrives.
+std::vector<HazardResult> run_stability(const StabilityOptions& options, const Registries& registries,
                                         const std::function<void(const HazardResult&)>& progress = {});
 
 /// Names of every hazard case, fracture ones first (full, not quick, sizes).

@@ -1,6 +1,5 @@
 #include "harness/stability/stress_hazards.h"
 
-#include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 
 #include <cmath>
@@ -106,13 +105,13 @@ std::vector<StressHazard> stress_hazards(bool quick) {
   return out;
 }
 
-HazardResult run_stress_hazard(const StressHazard& h, const std::string& model) {
+HazardResult run_stress_hazard(const StressHazard& h, const std::string& model, const Registries& registries) {
   HazardResult r;
   r.hazard = h.name;
   r.algorithm = model;
   r.kind = "stress";
   r.fragments = h.graph.node_count();
-  Result<std::unique_ptr<StressModel>> m = registries().stress_models.create(model);
+  Result<std::unique_ptr<StressModel>> m = registries.stress_models.create(model);
   if (!m) {
     r.outcome = HazardOutcome::rejected_input;
     r.detail = m.error().message;

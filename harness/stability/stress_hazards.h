@@ -5,6 +5,7 @@
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/stress/stress_model.h"
+#include "algorithms/registry/registries.h"
 #include "harness/stability/hazard_outcome.h"
 
 #include <string>
@@ -25,6 +26,7 @@ std::vector<StressHazard> stress_hazards(bool quick);
 
 /// Propagates failure on `hazard` with the stress model named `model` twice and checks: every bond
 /// figure and displacement finite, the solver converged with a finite residual, both runs equal.
-HazardResult run_stress_hazard(const StressHazard& hazard, const std::string& model);
+/// The model is created from `registries` with its default settings.
+HazardResult run_stress_hazard(const StressHazard& hazard, const std::string& model, const Registries& registries);
 
 }  // namespace shatter

@@ -5,7 +5,7 @@
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
-#include "algorithms/register_all.h"
+#include "tests/support/builtin_registries.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "tests/support/shapes.h"
 
@@ -25,7 +25,7 @@ TEST_CASE("conformance: every registered fracturer keeps the fracture contract",
                                           {"sphere", make_sphere(1.0, 16, 8)},
                                           {"torus", make_torus(2.0, 0.5, 24, 12)},
                                           {"U shape", test::make_u_shape()}};
-  const Registries& r = registries();
+  const Registries r = test::builtin_registries();
   for (const std::string& name : r.fracturers.names()) {
     auto fracturer = r.fracturers.create(name);
     REQUIRE(fracturer.ok());

@@ -4,7 +4,7 @@
 // saturate or read NaN, and a damaged pre-fracture cache entry. Every input is generated here.
 
 #include "tests/hostile/hostile_support.h"
-#include "algorithms/register_all.h"
+#include "tests/support/builtin_registries.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "harness/cases/case_loader.h"

@@ -1,7 +1,7 @@
 // The frame pipeline: skipping is result-neutral, the cache returns what was computed, an impact that
 // reaches nothing fractures nothing, and a stress cascade after an impact drops what lost its support.
 
-#include "algorithms/register_all.h"
+#include "tests/support/builtin_registries.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
 #include "harness/pipeline/case_structure.h"
@@ -27,7 +27,7 @@ PreparedCase prepared(const std::string& name) {
 
 RunResult run(const PreparedCase& p, RunOptions o) {
   o.partition_samples = 0;
-  Result<RunResult> r = run_destruction(p, o);
+  Result<RunResult> r = run_destruction(p, o, test::builtin_registries());
   INFO((r ? std::string() : r.error().message));
   REQUIRE(r);
   return std::move(*r);
@@ -77,9 +77,9 @@ PreparedCase weak_fixed_beam() {
   PreparedCase p = prepared("fixed-beam");
   p.spec.impacts.front().impact.point = Vec3(1.75, 0.0, 0.25);
   p.spec.impacts.front().impact.radius = 0.0;
-  Result<CaseStructure> s = build_case_structure(p.spec);
+  Result<CaseStructure> s = build_case_structure(p.spec, test::builtin_registries());
   REQUIRE(s);
-  auto model = registries().stress_models.create("von-mises");
+  auto model = test::builtin_registries().stress_models.create("von-mises");
   REQUIRE(model);
   Loads loads;
   loads.gravity = p.spec.gravity;

@@ -5,6 +5,7 @@
 #include "harness/cases/case_loader.h"
 #include "harness/pipeline/debris_field.h"
 #include "harness/pipeline/destruction_run.h"
+#include "tests/support/builtin_registries.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,7 +32,7 @@ RunResult run(const PreparedCase& p, ScheduleMode mode, int frames = 40) {
   o.prefracture_fragments = 30;
   o.runtime_fragments = 10;
   o.schedule = mode;
-  Result<RunResult> r = run_destruction(p, o);
+  Result<RunResult> r = run_destruction(p, o, test::builtin_registries());
   INFO((r ? std::string() : r.error().message));
   REQUIRE(r);
   return std::move(*r);

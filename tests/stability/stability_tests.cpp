@@ -1,8 +1,10 @@
 /// The stability battery: isolation, the verdicts of a few hazards, and the CLI command in quick form.
 
 #include "harness/stability/fracture_hazards.h"
+#include "tests/support/builtin_registries.h"
 #include "harness/stability/isolated_run.h"
 #include "harness/stability/stability_battery.h"
+#include "tests/support/builtin_registries.h"
 #include "harness/stability/stress_hazards.h"
 #include "tests/support/cli_runner.h"
 
@@ -48,7 +50,7 @@ TEST_CASE("stability: plane-slice cuts through vertices, along edges and in face
   const std::vector<FractureHazard> all = fracture_hazards(true);
   for (const char* name : {"cut-through-vertices", "cut-along-edges", "cut-containing-faces", "grazing-planes",
                            "nearly-parallel-planes"}) {
-    const HazardResult r = run_fracture_hazard(find_fracture_hazard(all, name), "plane-slice");
+    const HazardResult r = run_fracture_hazard(find_fracture_hazard(all, name), "plane-slice", test::builtin_registries());
     INFO(name << ": " << outcome_tag(r.outcome) << " " << r.detail);
     CHECK(r.outcome == HazardOutcome::valid);
     CHECK(r.worst_error <= 1e-6);
@@ -58,7 +60,7 @@ TEST_CASE("stability: plane-slice cuts through vertices, along edges and in face
 TEST_CASE("stability: a pinched and an inverted solid are repaired or refused, never broken output", "[stability]") {
   const std::vector<FractureHazard> all = fracture_hazards(true);
   for (const char* name : {"inverted-orientation", "duplicated-vertices", "pinched-vertex"}) {
-    const HazardResult r = run_fracture_hazard(find_fracture_hazard(all, name), "plane-slice");
+    const HazardResult r = run_fracture_hazard(find_fracture_hazard(all, name), "plane-slice", test::builtin_registries());
     INFO(name << ": " << outcome_tag(r.outcome) << " " << r.detail);
     CHECK((r.outcome == HazardOutcome::valid || r.outcome == HazardOutcome::rejected_input));
   }
@@ -67,7 +69,7 @@ TEST_CASE("stability: a pinched and an inverted solid are repaired or refused, n
 TEST_CASE("stability: stress hazards give finite figures and report the solver", "[stability]") {
   for (const StressHazard& h : stress_hazards(true)) {
     if (h.graph.node_count() > 100) continue;  // the long chain runs in the CLI test below
-    const HazardResult r = run_stress_hazard(h, "von-mises");
+    const HazardResult r = run_stress_hazard(h, "von-mises", test::builtin_registries());
     INFO(h.name << ": " << outcome_tag(r.outcome) << " " << r.detail);
     CHECK((r.outcome == HazardOutcome::valid || r.outcome == HazardOutcome::rejected_input));
     CHECK(std::isfinite(r.residual));

@@ -1,5 +1,5 @@
 // Propagation: failure order, falling clusters, anchoring after breaks, no NaN, bad inputs.
-#include "algorithms/register_all.h"
+#include "tests/support/builtin_registries.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "tests/stress/structures.h"
@@ -120,7 +120,7 @@ TEST_CASE("propagation: re-solving only the touched component leaves the others 
 TEST_CASE("propagation: a structure with no anchor falls whole, never solved, without NaN", "[stress][propagation]") {
   const SupportGraph g = graph_of(sliced_box({kL, kB, kH}, {kL / 2, 0, 0}, planes_at(0, even_cuts(0, kL, 4))), {}, kRho);
   for (const char* name : {"connection-count", "tresca", "von-mises"}) {
-    Result<std::unique_ptr<StressModel>> model = registries().stress_models.create(name);
+    Result<std::unique_ptr<StressModel>> model = test::builtin_registries().stress_models.create(name);
     REQUIRE(model.ok());
     Result<PropagationResult> r = propagate(**model, g, Loads{}, Material{});
     REQUIRE(r.ok());
@@ -135,8 +135,8 @@ TEST_CASE("stress-model: bad materials, loads and names are errors", "[stress]")
   const SupportGraph g = graph_of(sliced_box({kL, kB, kH}, {kL / 2, 0, 0}, planes_at(0, {2.0})),
                                   {box_region({-1, -1, -1}, {0.001, 1, 1})}, kRho);
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (const std::string& name : registries().stress_models.names()) {
-    Result<std::unique_ptr<StressModel>> model = registries().stress_models.create(name);
+  for (const std::string& name : test::builtin_registries().stress_models.names()) {
+    Result<std::unique_ptr<StressModel>> model = test::builtin_registries().stress_models.create(name);
     REQUIRE(model.ok());
     CHECK((*model)->name() == name);
     for (int field = 0; field < 6; ++field) {
@@ -155,7 +155,7 @@ TEST_CASE("stress-model: bad materials, loads and names are errors", "[stress]")
     bad.point_loads = {{0, Vec3::Zero(), Vec3(nan, 0, 0)}};
     CHECK_FALSE((*model)->evaluate(g, bad, Material{}).ok());
   }
-  Result<std::unique_ptr<StressModel>> unknown = registries().stress_models.create("rankine");
+  Result<std::unique_ptr<StressModel>> unknown = test::builtin_registries().stress_models.create("rankine");
   REQUIRE_FALSE(unknown.ok());
   CHECK(unknown.error().message.find("von-mises") != std::string::npos);
 }

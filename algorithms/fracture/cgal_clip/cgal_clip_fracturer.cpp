@@ -125,9 +125,23 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_planes(const Mesh& 
   });
 }
 
+Result<std::vector<Fragment>> CgalClipFracturer::replay(const Mesh& solid, const CutPlan& plan) const {
+  if (const auto* schedule = std::get_if<RecursiveCutSchedule>(&plan)) {
+    FractureParams params;
+    params.fragments = schedule->fragments;
+    params.seed = schedule->seed;
+    return fracture(solid, params);
+  }
+  if (const auto* planes = std::get_if<PlaneCuts>(&plan)) return fracture_by_planes(solid, planes->planes);
+  return fracture_by_cells(solid, std::get<CellCuts>(plan).cells);
+}
+
 void register_cgal_clip(FracturerRegistry& registry) {
-  registry.add("cgal-clip", "the plane-slice cut schedule done by exact CGAL clipping (reference, slow)",
-               [] { return std::make_unique<CgalClipFracturer>(); });
+  registry.add("cgal-clip", "the plane-slice cut schedule done by exact CGAL clipping (reference, slow)", {},
+               [](const PluginSettings& settings) -> Result<std::unique_ptr<Fracturer>> {
+                 if (Status s = SettingsReader("cgal-clip", settings, {}).check_keys(); !s) return s.error();
+                 return std::unique_ptr<Fracturer>(std::make_unique<CgalClipFracturer>());
+               });
 }
 
 }  // namespace shatter

@@ -29,6 +29,11 @@ class CgalClipFracturer final : public Fracturer {
   [[nodiscard]] std::string_view name() const override { return "cgal-clip"; }
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
+  /// The exact reference: the others are replayed with it.
+  [[nodiscard]] bool exact_reference() const override { return true; }
+  /// Replays `plan` exactly: fracture() for a recursive schedule, fracture_by_planes() for planes,
+  /// fracture_by_cells() for cells.
+  [[nodiscard]] Result<std::vector<Fragment>> replay(const Mesh& solid, const CutPlan& plan) const;
   /// Cuts `solid` by each plane in turn, as PlaneSliceFracturer::fracture_by_planes.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid,
                                                                  std::span<const Plane> planes) const;
@@ -41,7 +46,7 @@ class CgalClipFracturer final : public Fracturer {
                                                                 std::span<const ConvexCell> cells) const;
 };
 
-/// Registers "cgal-clip".
+/// Registers "cgal-clip" (no settings).
 void register_cgal_clip(FracturerRegistry& registry);
 
 }  // namespace shatter

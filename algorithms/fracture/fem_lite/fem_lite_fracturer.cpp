@@ -65,9 +65,39 @@ Result<std::vector<Fragment>> FemLiteFracturer::fracture(const Mesh& solid, cons
   return PlaneSliceFracturer().fracture_by_planes(solid, *planes);
 }
 
+Result<std::optional<CutPlan>> FemLiteFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {
+  Result<std::vector<Plane>> planes = crack_planes(solid, params);
+  if (!planes) return planes.error();
+  return std::optional<CutPlan>(PlaneCuts{std::move(*planes)});
+}
+
+std::vector<SettingDoc> fem_lite_setting_docs() {
+  return {{"resolution", "cells", "16", "[2, " + std::to_string(kFemLiteMaxResolution) + "]",
+           "grid cells along the longest axis of the solid's box", {8, 16, 32}},
+          {"contact_time", "s", "0.0166667", "(0, 1e6]", "contact time of the impact: force = impulse / time", {}},
+          {"crack_spacing", "cells", "1", "[0, 1e6]", "least distance of a new crack from an earlier plane", {}},
+          {"min_piece_share", "", "0.01", "[0, 0.99]", "least piece a crack may cut off, share of the mean", {}}};
+}
+
+Result<FemLiteSettings> read_fem_lite_settings(const PluginSettings& settings) {
+  const std::vector<SettingDoc> docs = fem_lite_setting_docs();
+  const SettingsReader r("fem-lite", settings, docs);
+  FemLiteSettings f;
+  if (Status s = r.check_keys(); !s) return s.error();
+  if (Status s = r.integer("resolution", 2, kFemLiteMaxResolution, f.resolution); !s) return s.error();
+  if (Status s = r.number_above("contact_time", 0.0, 1e6, f.contact_time); !s) return s.error();
+  if (Status s = r.number("crack_spacing", 0.0, 1e6, f.crack_spacing); !s) return s.error();
+  if (Status s = r.number("min_piece_share", 0.0, 0.99, f.min_piece_share); !s) return s.error();
+  return f;
+}
+
 void register_fem_lite(FracturerRegistry& registry) {
   registry.add("fem-lite", "crack planes from a coarse linear-elastic FEM solve under the impact, plane-slice cuts",
-               [] { return std::make_unique<FemLiteFracturer>(); });
+               fem_lite_setting_docs(), [](const PluginSettings& settings) -> Result<std::unique_ptr<Fracturer>> {
+                 Result<FemLiteSettings> f = read_fem_lite_settings(settings);
+                 if (!f) return f.error();
+                 return std::unique_ptr<Fracturer>(std::make_unique<FemLiteFracturer>(std::move(*f)));
+               });
 }
 
 }  // namespace shatter

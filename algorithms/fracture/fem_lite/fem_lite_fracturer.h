@@ -37,6 +37,9 @@ class FemLiteFracturer final : public Fracturer {
   /// crack_planes() then PlaneSliceFracturer::fracture_by_planes.
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
+  /// The crack planes (crack_planes()), cut in order.
+  [[nodiscard]] Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
+                                                        const FractureParams& params) const override;
   /// The crack planes of `solid` (closed, outward) under `params.impact` and gravity; cutting the
   /// solid by all of them (every piece each plane crosses) gives at least params.fragments fragments
   /// unless the grid runs out of candidate elements. Empty for one fragment.
@@ -50,7 +53,14 @@ class FemLiteFracturer final : public Fracturer {
   FemLiteSettings settings_;
 };
 
-/// Registers "fem-lite" (default settings).
+/// The documented settings of "fem-lite": the numeric fields of FemLiteSettings (the material,
+/// gravity and supports are a program's, not a case's); `resolution` is its accuracy knob.
+std::vector<SettingDoc> fem_lite_setting_docs();
+
+/// FemLiteSettings (defaults, with the given keys) from user settings; an error names the key and range.
+Result<FemLiteSettings> read_fem_lite_settings(const PluginSettings& settings);
+
+/// Registers "fem-lite" (settings: fem_lite_setting_docs()).
 void register_fem_lite(FracturerRegistry& registry);
 
 }  // namespace shatter

@@ -82,9 +82,17 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh
   return to_fragments(std::move(*pieces));
 }
 
+Result<std::optional<CutPlan>> PlaneSliceFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {
+  if (Status s = check_fracture_params(solid, params, "plane-slice"); !s) return s.error();
+  return std::optional<CutPlan>(RecursiveCutSchedule{params.fragments, params.seed});
+}
+
 void register_plane_slice(FracturerRegistry& registry) {
-  registry.add("plane-slice", "recursive random plane cuts, constrained Delaunay caps (fast)",
-               [] { return std::make_unique<PlaneSliceFracturer>(); });
+  registry.add("plane-slice", "recursive random plane cuts, constrained Delaunay caps (fast)", {},
+               [](const PluginSettings& settings) -> Result<std::unique_ptr<Fracturer>> {
+                 if (Status s = SettingsReader("plane-slice", settings, {}).check_keys(); !s) return s.error();
+                 return std::unique_ptr<Fracturer>(std::make_unique<PlaneSliceFracturer>());
+               });
 }
 
 }  // namespace shatter

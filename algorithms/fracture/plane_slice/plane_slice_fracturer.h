@@ -17,13 +17,16 @@ class PlaneSliceFracturer final : public Fracturer {
   [[nodiscard]] std::string_view name() const override { return "plane-slice"; }
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
+  /// Its own recursive schedule (fragments and seed of `params`).
+  [[nodiscard]] Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
+                                                        const FractureParams& params) const override;
   /// Cuts `solid` by each plane in turn (every piece a plane crosses is split); an error once the
   /// pieces outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller).
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
                                                                  int max_fragments = kMaxFragments) const;
 };
 
-/// Registers "plane-slice".
+/// Registers "plane-slice" (no settings).
 void register_plane_slice(FracturerRegistry& registry);
 
 }  // namespace shatter

@@ -300,9 +300,44 @@ std::vector<Fragment> VoronoiFracturer::cut_cells(const Mesh& solid, std::span<c
   return out;
 }
 
+Result<std::optional<CutPlan>> VoronoiFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {
+  if (Status s = check_fracture_params(solid, params, "voronoi"); !s) return s.error();
+  if (Status s = check_settings(settings_); !s) return s.error();
+  Result<std::vector<Vec3>> sites = sample_sites(solid, params, settings_.sites);
+  if (!sites) return sites.error();
+  const int n = static_cast<int>(sites->size());
+  CellCuts plan;
+  plan.cells.resize(sites->size());
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      if (i != j) plan.cells[static_cast<std::size_t>(i)].planes.push_back(bisector_plane(*sites, i, j));
+  return std::optional<CutPlan>(std::move(plan));
+}
+
+std::vector<SettingDoc> voronoi_setting_docs() {
+  return {{"impact_share", "", "0.5", "[0, 1]", "share of the sites clustered in the impact's ball", {}},
+          {"max_draws_per_site", "draws", "2000", "[1, 1000000]", "random draws per site before giving up", {}},
+          {"leaf_cells", "cells", "1", "[1, 100000]", "cells cut straight from their node's piece", {}}};
+}
+
+Result<VoronoiSettings> read_voronoi_settings(const PluginSettings& settings) {
+  const std::vector<SettingDoc> docs = voronoi_setting_docs();
+  const SettingsReader r("voronoi", settings, docs);
+  VoronoiSettings v;
+  if (Status s = r.check_keys(); !s) return s.error();
+  if (Status s = r.number("impact_share", 0.0, 1.0, v.sites.impact_share); !s) return s.error();
+  if (Status s = r.integer("max_draws_per_site", 1, 1000000, v.sites.max_draws_per_site); !s) return s.error();
+  if (Status s = r.integer("leaf_cells", 1, 100000, v.leaf_cells); !s) return s.error();
+  return v;
+}
+
 void register_voronoi(FracturerRegistry& registry) {
   registry.add("voronoi", "Voronoi cells of uniform or impact-clustered sites, cut by bisector planes",
-               [] { return std::make_unique<VoronoiFracturer>(); });
+               voronoi_setting_docs(), [](const PluginSettings& settings) -> Result<std::unique_ptr<Fracturer>> {
+                 Result<VoronoiSettings> v = read_voronoi_settings(settings);
+                 if (!v) return v.error();
+                 return std::unique_ptr<Fracturer>(std::make_unique<VoronoiFracturer>(*v));
+               });
 }
 
 }  // namespace shatter

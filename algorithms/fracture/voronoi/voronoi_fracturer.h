@@ -30,6 +30,9 @@ class VoronoiFracturer final : public Fracturer {
   /// whose surface intersects itself is an error (its cut outlines would cross).
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
+  /// The bisector cells of the sites fracture() places (one cell per site, in site order).
+  [[nodiscard]] Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
+                                                        const FractureParams& params) const override;
   /// Cuts `solid` into the Voronoi cells of the given sites (#S distinct finite points, m; sites
   /// outside the solid are allowed, their cells may miss it). Fragments come in site order, the parts
   /// of one cell in connected_components order; cells that miss the solid give none. A solid whose
@@ -44,7 +47,13 @@ class VoronoiFracturer final : public Fracturer {
   VoronoiSettings settings_;
 };
 
-/// Registers "voronoi".
+/// The documented settings of "voronoi" (the fields of VoronoiSettings).
+std::vector<SettingDoc> voronoi_setting_docs();
+
+/// VoronoiSettings from user settings; an error names the key and its range.
+Result<VoronoiSettings> read_voronoi_settings(const PluginSettings& settings);
+
+/// Registers "voronoi" (settings: voronoi_setting_docs()).
 void register_voronoi(FracturerRegistry& registry);
 
 }  // namespace shatter

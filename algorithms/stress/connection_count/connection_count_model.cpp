@@ -58,8 +58,18 @@ Result<StressResult> ConnectionCountModel::reevaluate(const SupportGraph& graph,
 }
 
 void register_connection_count(StressModelRegistry& registry) {
-  registry.add("connection-count", "the seed's heuristic: count of remaining connections, DFS to a root",
-               [] { return std::make_unique<ConnectionCountModel>(); });
+  std::vector<SettingDoc> docs = {
+      {"min_support_fraction", "", "0.5", "[0, 1]", "share of its original connections a piece must keep", {}},
+      {"min_connections", "connections", "1", "[0, 1000000]", "connections a non-root piece must keep", {}}};
+  registry.add("connection-count", "the seed's heuristic: count of remaining connections, DFS to a root", docs,
+               [docs](const PluginSettings& settings) -> Result<std::unique_ptr<StressModel>> {
+                 const SettingsReader r("connection-count", settings, docs);
+                 ConnectionCountSettings c;
+                 if (Status s = r.check_keys(); !s) return s.error();
+                 if (Status s = r.number("min_support_fraction", 0.0, 1.0, c.min_support_fraction); !s) return s.error();
+                 if (Status s = r.integer("min_connections", 0, 1000000, c.min_connections); !s) return s.error();
+                 return std::unique_ptr<StressModel>(std::make_unique<ConnectionCountModel>(c));
+               });
 }
 
 }  // namespace shatter

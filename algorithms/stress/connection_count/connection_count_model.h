@@ -33,7 +33,7 @@ class ConnectionCountModel final : public StressModel {
   ConnectionCountSettings settings_;
 };
 
-/// Registers "connection-count".
+/// Registers "connection-count" (settings: min_support_fraction in [0, 1], min_connections >= 0).
 void register_connection_count(StressModelRegistry& registry);
 
 }  // namespace shatter

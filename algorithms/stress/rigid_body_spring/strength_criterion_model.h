@@ -31,6 +31,15 @@ class StrengthCriterionModel final : public StressModel {
   SpringSolverSettings settings_;
 };
 
+/// The documented settings of "tresca" and "von-mises": `tolerance` (SpringSolverSettings::
+/// residual_tolerance), `max_iterations` (cg_max_iterations), `cg_tolerance`, and `cg_only` (no block
+/// factorised: direct_max_flops < 0). The accuracy command sweeps CG on a model that documents these.
+std::vector<SettingDoc> spring_solver_setting_docs();
+
+/// SpringSolverSettings (defaults, with the given keys) from user settings of `model`; an error names
+/// the key and its range.
+Result<SpringSolverSettings> read_spring_solver_settings(std::string_view model, const PluginSettings& settings);
+
 /// Registers "tresca".
 void register_tresca(StressModelRegistry& registry);
 

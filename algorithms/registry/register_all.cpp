@@ -1,4 +1,4 @@
-#include "algorithms/register_all.h"
+#include "algorithms/registry/registries.h"
 
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
@@ -17,15 +17,6 @@ void register_all(Registries& registries) {
   register_connection_count(registries.stress_models);
   register_tresca(registries.stress_models);
   register_von_mises(registries.stress_models);
-}
-
-const Registries& registries() {
-  static const Registries instance = [] {
-    Registries r;
-    register_all(r);
-    return r;
-  }();
-  return instance;
 }
 
 }  // namespace shatter

@@ -1,0 +1,16 @@
+#pragma once
+/// The benchmark families registered at run time over a Registries: every plugin in it is benchmarked.
+
+#include "algorithms/registry/registries.h"
+
+namespace shatter {
+
+/// fracture/<mesh>/<fracturer>/<n> for every fracturer of `registries` (and the slice/, voronoi/ and
+/// self-intersection/ families); `registries` must outlive the benchmark run.
+void register_fracture_benchmarks(const Registries& registries);
+
+/// evaluate_wall/<model> and cascade_wall/<model> for every stress model of `registries`, which must
+/// outlive the benchmark run.
+void register_stress_benchmarks(const Registries& registries);
+
+}  // namespace shatter
