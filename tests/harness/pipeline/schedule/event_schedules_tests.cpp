@@ -97,6 +97,12 @@ TEST_CASE("schedule/amortized: steps stop once the frame's work reaches the budg
     REQUIRE(fake.log.size() == kStepsPerEvent);
     REQUIRE(queue.empty());
   }
+  SECTION("a budget reached exactly stops the frame: 0.4 + 0.4 >= 0.8, two steps") {
+    RuntimeEvent a = event(0, 2, 2);
+    EventQueue queue{&a};
+    REQUIRE(run_amortized(queue, 2, false, 0.8, fake.stepper()));
+    REQUIRE(fake.log.size() == 2);
+  }
   SECTION("budget 0: one step a frame; nothing before the impact") {
     RuntimeEvent a = event(0, 2, 2);
     EventQueue queue{&a};
