@@ -1,5 +1,6 @@
 #include "harness/accuracy/fracture_accuracy.h"
 
+#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 #include "harness/accuracy/fracture_replay.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"

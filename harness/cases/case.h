@@ -12,7 +12,7 @@
 #include "algorithms/core/plane.h"
 #include "algorithms/core/plugin_settings.h"
 #include "algorithms/fracture/fracturer.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <cstdint>
 #include <filesystem>

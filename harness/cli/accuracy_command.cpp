@@ -1,5 +1,6 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
+#include "algorithms/fracture/fem_lite/fem_lite_settings.h"
 #include "algorithms/registry/registries.h"
 #include "harness/accuracy/accuracy_output.h"
 #include "harness/accuracy/fracture_accuracy.h"

@@ -3,7 +3,7 @@
 
 #include "algorithms/registry/registries.h"
 #include "algorithms/stress/propagation.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 #include "tests/support/builtin_registries.h"
 
 #include <catch2/catch.hpp>
@@ -50,8 +50,8 @@ TEST_CASE("settings: every plugin documents its keys, and its defaults are accep
 TEST_CASE("settings: the stress tolerance and iteration cap reach the solver", "[registry][stress]") {
   const Registries r = test::builtin_registries();
   // A 4 m cantilever of 8 slabs, anchored at x = 0.
-  const SupportGraph g = test::graph_of(test::sliced_box({4, 0.5, 0.5}, {2, 0, 0.25}, test::planes_at(0, test::even_cuts(0, 4, 8))),
-                                        {test::box_region({-1, -1, -1}, {0.001, 1, 1})}, 2400.0);
+  const SupportGraph g = fixtures::graph_of(fixtures::sliced_box({4, 0.5, 0.5}, {2, 0, 0.25}, fixtures::planes_at(0, fixtures::even_cuts(0, 4, 8))),
+                                        {fixtures::box_region({-1, -1, -1}, {0.001, 1, 1})}, 2400.0);
   Loads loads;
   Material material;
   material.tensile_strength = material.compressive_strength = material.shear_strength = 1e12;  // nothing breaks

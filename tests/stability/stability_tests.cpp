@@ -1,8 +1,9 @@
 /// The stability battery: isolation, the verdicts of a few hazards, and the CLI command in quick form.
 
 #include "harness/stability/fracture_hazards.h"
-#include "tests/support/builtin_registries.h"
+#include "harness/process/isolated_run.h"
 #include "harness/stability/isolated_run.h"
+#include "tests/support/builtin_registries.h"
 #include "harness/stability/stability_battery.h"
 #include "tests/support/builtin_registries.h"
 #include "harness/stability/stress_hazards.h"

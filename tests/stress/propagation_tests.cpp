@@ -2,7 +2,7 @@
 #include "tests/support/builtin_registries.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <limits>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 namespace {
 
