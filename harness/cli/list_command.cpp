@@ -12,7 +12,7 @@ namespace {
 void print_plugin(const std::string& name, const std::string& description, std::span<const SettingDoc> settings) {
   fmt::print("  {:<18} {}\n", name, description);
   for (const SettingDoc& s : settings)
-    fmt::print("    {:<20} {:<8} default {:<10} range {:<16} {}\n", "settings." + s.key, s.unit.empty() ? "-" : s.unit,
+    fmt::print("    {:<29} {:<12} default {:<10} range {:<16} {}\n", "settings." + s.key, s.unit.empty() ? "-" : s.unit,
                s.default_text, s.range, s.description);
 }
 
