@@ -9,6 +9,7 @@ namespace {
 
 /// Shortest text that reads back as `v` ("8", "0.5", "1e-09").
 std::string number_text(double v) {
+  if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.17g", v);
   for (int precision = 1; precision <= 17; ++precision) {

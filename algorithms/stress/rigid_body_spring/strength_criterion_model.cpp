@@ -90,7 +90,7 @@ Result<StressResult> StrengthCriterionModel::reevaluate(const SupportGraph& grap
 }
 
 std::vector<SettingDoc> spring_solver_setting_docs() {
-  return {{"tolerance", "", "1e-06", "(0, 1]", "relative residual |K u - f| / |f| a converged solve may leave", {}},
+  return {{"tolerance", "", "1e-06", "(0, 1]", "relative residual |K u - f| / |f| a converged solve may leave (or cg_tolerance, if larger)", {}},
           {"max_iterations", "iterations", "20000", "[1, 1000000000]", "CG iterations per block before giving up", {}},
           {"cg_tolerance", "", "1e-10", "(0, 1]", "relative residual at which CG stops, per block", {}},
           {"cg_only", "", "false", "true or false", "solve every block by CG, factorise none", {}}};
