@@ -9,7 +9,7 @@
 #include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <benchmark/benchmark.h>
 

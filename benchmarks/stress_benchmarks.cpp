@@ -10,7 +10,7 @@
 #include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <benchmark/benchmark.h>
 

@@ -13,7 +13,7 @@
 #include "harness/results/grid_merge.h"
 #include "harness/results/grid_reader.h"
 #include "harness/results/grid_report.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 #include "tests/support/cli_runner.h"
 
 #include <catch2/catch.hpp>

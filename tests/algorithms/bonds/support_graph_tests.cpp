@@ -3,7 +3,7 @@
 #include "algorithms/bonds/section_moments.h"
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/mesh_io.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <catch2/catch.hpp>
 

@@ -4,7 +4,7 @@
 // pattern (stiffness_pattern.h) against K summed densely from the same bond blocks.
 #include "algorithms/core/random.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <Eigen/Dense>
 

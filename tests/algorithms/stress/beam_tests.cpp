@@ -1,6 +1,6 @@
 // tresca and von-mises against beam theory and statics: cantilever, column, fixed-fixed beam.
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <catch2/catch.hpp>
 

@@ -2,7 +2,7 @@
 #include "algorithms/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <catch2/catch.hpp>
 

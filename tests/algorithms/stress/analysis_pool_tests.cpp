@@ -6,7 +6,7 @@
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "tests/support/structures.h"
 
 #include <catch2/catch.hpp>
 
