@@ -4,7 +4,7 @@
 // says how to regenerate them, and when that is allowed).
 
 #include "algorithms/core/primitives.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "tests/support/determinism_hash.h"
 #include "tests/support/mesh_fixtures.h"
 #include "tests/support/shapes.h"

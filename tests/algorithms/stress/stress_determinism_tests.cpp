@@ -3,7 +3,7 @@
 // after propagation hash to the digests committed in tests/fixtures/determinism_hashes.json
 // (tests/support/determinism_hash.h says how to regenerate them, and when that is allowed).
 
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
 #include "harness/pipeline/case_structure.h"
