@@ -58,12 +58,6 @@ void require_same_outcome(const RunResult& a, const RunResult& b) {
   REQUIRE(a.bodies == b.bodies);
 }
 
-int piece_count(const RunResult& r) {
-  int n = 0;
-  for (const auto& p : r.pieces) n += static_cast<int>(p.size());
-  return n;
-}
-
 }  // namespace
 
 TEST_CASE("schedule: immediate, prefetch and amortized give the same fragments, bonds and falling clusters",
@@ -88,8 +82,6 @@ TEST_CASE("schedule: amortized never spends more than its budget plus one step i
   for (const double budget : {0.0, 0.3, 1.0}) {
     p.spec.schedule.work_budget_ms = budget;
     const RunResult r = run(p, ScheduleMode::amortized);
-    WARN("budget " << budget << " ms: " << r.step_ms.size() << " steps, largest step " << r.largest_step_ms
-                   << " ms, latency " << r.latency.frames << " frames");
     REQUIRE(r.step_ms.size() > 1);
     for (const double w : r.frame_work_ms) REQUIRE(w <= budget + r.largest_step_ms);
     if (budget == 0.0) {

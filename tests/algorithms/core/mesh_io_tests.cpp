@@ -231,7 +231,7 @@ TEST_CASE("mesh_io: a real OFF file cut in half is reported as truncated", "[mes
   CHECK_THAT(read_error(half), StartsWith(half.string() + ":") && Contains("truncated file"));
 }
 
-TEST_CASE("mesh_io: every real OFF file reads or fails cleanly", "[mesh_io][real]") {
+TEST_CASE("mesh_io: every real OFF file reads or fails cleanly", "[mesh_io][real][slow]") {
   if (!test::have_meshes()) return;
   int read = 0, valid = 0;
   for (const auto& entry : std::filesystem::directory_iterator(test::mesh_dir())) {

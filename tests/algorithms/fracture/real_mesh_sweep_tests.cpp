@@ -64,9 +64,10 @@ void sweep(const Fracturer& fracturer) {
       clean += m.all_closed && m.volume_error <= 1e-9 && m.partition_error == 0.0;
     }
   }
-  WARN(fracturer.name() << " over the CGAL data set: " << clean << " clean runs, " << refused
-                        << " self-intersecting meshes refused");
   CHECK(clean > 150);
+  // bull, camel, cow, elk and man: the data set's self-intersecting meshes that load as solids (bones
+  // is refused by the loader, its shells cross).
+  CHECK(refused == 5);
 }
 
 }  // namespace
@@ -122,6 +123,5 @@ TEST_CASE("plane-slice: every closed mesh of the CGAL data set fractures cleanly
       }
     }
   }
-  WARN("CGAL data set: " << closed << " closed meshes fractured, " << refused << " refused");
   CHECK(closed > 50);
 }

@@ -7,6 +7,7 @@
 #include "harness/cases/case_library.h"
 #include "harness/cases/case_loader.h"
 #include "harness/cases/case_mesh.h"
+#include "tests/support/mesh_fixtures.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/core.h>
@@ -51,8 +52,6 @@ void require_error(const std::string& text, std::initializer_list<std::string> p
   for (const std::string& part : parts) CHECK_THAT(message, Catch::Contains(part));
 }
 
-bool have_elephant() { return fs::is_regular_file(fs::path(SHATTER_SOURCE_DIR) / "data/meshes/elephant.off"); }
-
 }  // namespace
 
 TEST_CASE("cases: every built-in case loads and its solid validates", "[cases]") {
@@ -60,10 +59,7 @@ TEST_CASE("cases: every built-in case loads and its solid validates", "[cases]")
   for (const std::string& name : names) {
     SECTION(name) {
       const fs::path path = fs::path(SHATTER_SOURCE_DIR) / "cases" / (name + ".json");
-      if (name == "elephant" && !have_elephant()) {
-        WARN("real meshes missing: run scripts/fetch-meshes");
-        return;
-      }
+      if (name == "elephant" && !test::have_meshes()) return;
       const Result<Case> c = load_case(path);
       INFO((c.ok() ? std::string() : c.error().message));
       REQUIRE(c.ok());
@@ -101,10 +97,7 @@ TEST_CASE("cases: the built-in cases have the documented geometry", "[cases]") {
   CHECK(wall->prefracture.fragments == 40);
   CHECK(wall->impacts.size() == 1);
 
-  if (!have_elephant()) {
-    WARN("real meshes missing: run scripts/fetch-meshes");
-    return;
-  }
+  if (!test::have_meshes()) return;
   const Result<Case> elephant = load_case(dir / "elephant.json");
   REQUIRE(elephant.ok());
   const Result<Solid> solid = build_case_solid(*elephant);

@@ -152,7 +152,9 @@ TEST_CASE("cli: grid refuses an unknown schedule and a bad latency budget with e
 TEST_CASE("cli: grid --timeout fails a cell that runs too long and goes on with the next", "[cli][grid][timeout]") {
   const auto dir = scratch("timeout");
   const auto json = dir / "grid.json";
-  // Cell 20000 x 5 takes about a minute (its pre-fracture alone); cell 10 x 5 a few ms.
+  // Cell 20000 x 5 cannot finish within the limit: its pre-fracture alone makes 2000 times the pieces of
+  // cell 10 x 5, which finishes far within it (plane-slice time per count: the `fracture/.../plane-slice/N`
+  // family of benchmarks/fracture_benchmarks.cpp).
   const auto r = run_cli(
       "grid --case building --prefracture 20000,10 --runtime 5 --repetitions 1 --frames 2 "
       "--no-cache --timeout 2 --json " +
