@@ -1,7 +1,7 @@
 #include "harness/grid/isolated_cell.h"
 
 #include "harness/results/grid_reader.h"
-#include "harness/results/grid_report.h"
+#include "harness/results/grid_json_reporter.h"
 #include "harness/stability/isolated_run.h"
 
 #include <fmt/core.h>

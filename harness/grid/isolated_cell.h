@@ -13,7 +13,7 @@
 /// reason. docs/design.md, "Grid cell time limit", weighs this against a deadline checked per frame.
 
 #include "algorithms/core/result.h"
-#include "harness/grid/grid_runner.h"
+#include "harness/results/grid_record.h"
 
 #include <functional>
 

@@ -79,7 +79,8 @@ struct PendingEvent {
 /// Everything a run keeps between frames.
 class Run {
  public:
-  Run(const PreparedCase& prepared, const RunOptions& options) : c_(prepared.spec), solid_(prepared.solid), o_(options) {}
+  Run(const PreparedCase& prepared, const RunOptions& options)
+      : c_(prepared.spec), solid_(prepared.solid), o_(options), settings_(run_settings(prepared.spec, options)) {}
 
   Result<RunResult> execute();
 
@@ -101,6 +102,7 @@ class Run {
   const Case& c_;
   const Solid& solid_;
   const RunOptions& o_;
+  const RunSettings settings_;             // o_ over the case (resolve_settings)
   StagePlan plan_;
   RunResult r_;
 
@@ -129,20 +131,20 @@ class Run {
 Status Run::create_algorithms() {
   const auto& reg = registries();
   if (!c_.prefracture.explicit_planes()) {
-    const std::string& name = o_.prefracture_fracturer.empty() ? c_.prefracture.fracturer : o_.prefracture_fracturer;
+    const std::string& name = settings_.prefracture_fracturer;
     auto f = reg.fracturers.create(name);
     if (!f) return Error{c_.name + ": prefracture.fracturer: " + f.error().message};
     prefracturer_ = std::move(*f);
   }
-  const std::string& runtime = o_.runtime_fracturer.empty() ? c_.runtime.fracturer : o_.runtime_fracturer;
+  const std::string& runtime = settings_.runtime_fracturer;
   auto rf = reg.fracturers.create(runtime);
   if (!rf) return Error{c_.name + ": runtime.fracturer: " + rf.error().message};
   runtime_fracturer_ = std::move(*rf);
-  const std::string& model = o_.stress_model.empty() ? c_.stress.model : o_.stress_model;
+  const std::string& model = settings_.stress_model;
   auto m = reg.stress_models.create(model);
   if (!m) return Error{c_.name + ": stress.model: " + m.error().message};
   model_ = std::move(*m);
-  runtime_fragments_ = o_.runtime_fragments > 0 ? o_.runtime_fragments : c_.runtime.fragments;
+  runtime_fragments_ = settings_.runtime_fragments;
   loads_.gravity = c_.gravity;
   return {};
 }
@@ -154,7 +156,7 @@ Status Run::prefracture() {
     key.planes = c_.prefracture.planes;
   } else {
     key.fracturer = std::string(prefracturer_->name());
-    key.fragments = o_.prefracture_fragments > 0 ? o_.prefracture_fragments : c_.prefracture.fragments;
+    key.fragments = settings_.prefracture_fragments;
     key.seed = c_.prefracture.seed + o_.repetition;
   }
   r_.prefracture_seed = key.seed;
@@ -565,10 +567,10 @@ Result<RunResult> Run::execute() {
   instruction_marks::set_frame(-1);
   if (Status s = setup(); !s) return s.error();
   r_.runtime_seed = c_.prefracture.seed + o_.repetition;
-  schedule_ = o_.schedule.value_or(c_.schedule.mode);
+  schedule_ = settings_.schedule;
   r_.schedule = schedule_;
 
-  const int frames = o_.frames > 0 ? o_.frames : c_.frames;
+  const int frames = settings_.frames;
   r_.frame_ms.assign(static_cast<std::size_t>(frames), 0.0);
   r_.frame_cpu_ms.assign(static_cast<std::size_t>(frames), 0.0);
   r_.frame_work_ms.assign(static_cast<std::size_t>(frames), 0.0);
@@ -660,6 +662,18 @@ Result<PreparedCase> prepare_case(Case c) {
   Result<Solid> solid = build_case_solid(c);
   if (!solid) return solid.error();
   return PreparedCase{std::move(c), std::move(*solid)};
+}
+
+RunSettings run_settings(const Case& c, const RunOptions& o) {
+  CaseOverrides over;
+  over.prefracture_fracturer = o.prefracture_fracturer;
+  over.runtime_fracturer = o.runtime_fracturer;
+  over.stress_model = o.stress_model;
+  over.prefracture_fragments = o.prefracture_fragments;
+  over.runtime_fragments = o.runtime_fragments;
+  over.frames = o.frames;
+  over.schedule = o.schedule;
+  return resolve_settings(c, over);
 }
 
 Result<RunResult> run_destruction(const PreparedCase& prepared, const RunOptions& options) {
