@@ -6,7 +6,7 @@
 /// faces tagged surface or cut; the fragments partition the input (volumes sum to the input volume);
 /// the same input, parameters and seed give the same fragments in the same order.
 
-#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/fragment.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
 
@@ -31,12 +31,6 @@ struct FractureParams {
   int fragments = 10;                  ///< requested number of fragments (>= 1)
   std::uint64_t seed = 1;              ///< random seed; same seed, same output
   std::optional<Impact> impact;        ///< where the piece is hit, when it is
-};
-
-/// One output fragment: a closed mesh and its mass properties (density 1).
-struct Fragment {
-  Mesh mesh;                 ///< closed, outward, faces tagged surface or cut
-  MassProperties mass;       ///< of `mesh`
 };
 
 /// A fracture algorithm. Implementations are stateless after construction and thread-compatible.

@@ -11,7 +11,7 @@
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <memory>
 #include <span>
@@ -108,8 +108,6 @@ class StressModel {
                                                         std::span<const int> touched) const = 0;
 };
 
-/// Error unless every material constant is finite and in range (names the field).
-Status check_material(const Material& material);
 
 /// Error unless gravity and every point load are finite and refer to existing nodes.
 Status check_loads(const Loads& loads, const SupportGraph& graph);

@@ -1,6 +1,6 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
 #include "harness/metrics/fracture_acceptance.h"

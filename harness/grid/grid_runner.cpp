@@ -3,7 +3,7 @@
 #include "harness/results/cell_checks.h"
 
 #include "algorithms/fracture/fracture_limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/grid/calibration.h"
 #include "harness/grid/isolated_cell.h"
 #include "harness/limits.h"

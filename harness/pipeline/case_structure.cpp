@@ -1,7 +1,7 @@
 #include "harness/pipeline/case_structure.h"
 
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/cases/case_mesh.h"
 
 #include <string>

@@ -3,7 +3,7 @@
 #include "algorithms/bonds/graph_components.h"
 #include "algorithms/fracture/local_fracture.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/pipeline/debris_field.h"
