@@ -39,9 +39,9 @@ int run_compare(const CompareCommandOptions& o) {
     if (Status s = write_file_atomically(o.markdown, markdown); !s) return fail_input("--markdown: " + s.error().message);
   if (!o.junit.empty()) {
     JunitSuite suite{"shatterbench.compare." + next->case_name, {}};
-    for (const std::string& m : report.mismatches) suite.cases.push_back({"comparable results", suite.name, 0.0, m});
+    for (const std::string& m : report.mismatches) suite.cases.push_back({"comparable results", suite.name, 0.0, m, {}});
     for (const ComparisonRow& r : report.rows) {
-      JunitCase c{fmt::format("cell {}: {}", r.cell, r.what), suite.name, 0.0, {}};
+      JunitCase c{fmt::format("cell {}: {}", r.cell, r.what), suite.name, 0.0, {}, {}};
       if (r.verdict == Verdict::regressed || r.verdict == Verdict::failed) c.failure = r.note;
       suite.cases.push_back(std::move(c));
     }

@@ -1,16 +1,15 @@
 #include "harness/cases/case_library.h"
 #include "harness/cli/command.h"
-#include "harness/grid/cell_checks.h"
+#include "harness/results/cell_checks.h"
 #include "harness/grid/grid_runner.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
 #include "harness/process/child_process.h"
-#include "harness/results/grid_report.h"
-#include "harness/results/run_context.h"
 #include "harness/results/callgrind_dumps.h"
-#include "harness/results/gbench_json.h"
+#include "harness/results/grid_json_reporter.h"
 #include "harness/results/grid_reader.h"
-#include "harness/results/junit.h"
+#include "harness/results/grid_reporter.h"
+#include "harness/results/run_context.h"
 #include "harness/pipeline/instruction_marks.h"
 
 #include <fmt/core.h>
@@ -265,11 +264,9 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   }
   if (!grid) return fail_input(grid.error().message);
 
-  if (instructions && !marking) {
-    std::cout << grid_instructions_markdown(*grid, prepared->spec.name) << std::flush;
-  } else {
-    std::cout << grid_to_markdown(*grid, prepared->spec.name) << std::flush;
-  }
+  GridReport report{*grid, prepared->spec.name, case_to_json(prepared->spec), RunContext{}};
+  std::cout << make_grid_reporter(instructions && !marking ? "instructions-markdown" : "markdown")->render(report)
+            << std::flush;
   // Instruction mode times are valgrind's, not the game's: the budget gate applies to time mode only.
   // The result checks of the fractures (cell_checks.h) apply in both modes.
   const bool checks_failed = std::any_of(grid->cells.begin(), grid->cells.end(),
@@ -278,31 +275,16 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   if (o.update_baseline && gate_failed)
     std::fprintf(stderr, "shatterbench: baseline %s not updated: the budget gate failed\n", json_path.string().c_str());
   if (!json_path.empty() && !(o.update_baseline && gate_failed)) {
-    const RunContext context = current_context();
-    const std::string json = o.format == "gbench"
-                                 ? grid_to_gbench_json(*grid, prepared->spec.name, context).dump(1) + "\n"
-                                 : grid_to_json(*grid, case_to_json(prepared->spec), context).dump(1) + "\n";
-    const std::string csv = grid_to_csv(*grid);
+    report.context = current_context();
+    const std::string json = make_grid_reporter(o.format == "gbench" ? "gbench" : "json")->render(report);
+    const std::string csv = make_grid_reporter("csv")->render(report);
     const FileContent set[] = {{json_path, json}, {csv_path, csv}};
     if (Status s = write_files_atomically(set); !s) return fail_input("--json: " + s.error().message);
     if (o.update_baseline) std::fprintf(stderr, "shatterbench: baseline %s updated\n", json_path.string().c_str());
   }
-  if (!o.junit.empty()) {
-    JunitSuite suite{"shatterbench.grid." + prepared->spec.name, {}};
-    for (const GridCell& cell : grid->cells) {
-      JunitCase jc{fmt::format("cell {} x {}", cell.prefracture, cell.runtime), suite.name, cell.worst_frame_ms / 1000.0, {}};
-      if (!cell.failed.empty())
-        jc.failure = cell.failed;
-      else if (const std::vector<std::string> checks = failed_cell_checks(cell); !checks.empty())
-        jc.failure = "check failed: " + checks.front();
-      else if (!instructions && !cell.within_budget)
-        jc.failure = fmt::format("worst frame {:.3f} ms > budget {:g} ms", cell.worst_frame_ms, grid->budget_ms);
-      else if (!instructions && !cell.within_latency_budget)
-        jc.failure = fmt::format("latency {:.3f} ms > budget {:g} ms", cell.latency_ms, grid->latency_budget_ms);
-      suite.cases.push_back(std::move(jc));
-    }
-    if (Status s = write_file_atomically(o.junit, junit_xml({suite})); !s) return fail_input("--junit: " + s.error().message);
-  }
+  if (!o.junit.empty())
+    if (Status s = write_file_atomically(o.junit, make_grid_reporter("junit")->render(report)); !s)
+      return fail_input("--junit: " + s.error().message);
   if (!gate_failed) return exit_ok;
   for (const GridCell& cell : grid->cells)
     print_failed_checks(fmt::format("cell {} x {}", cell.prefracture, cell.runtime), failed_cell_checks(cell));
@@ -319,7 +301,8 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
       std::fprintf(stderr,
                    "shatterbench: gate failed: cell %d x %d: latency %.3f ms (%g frames, schedule %s) > latency "
                    "budget %g ms\n",
-                   cell.prefracture, cell.runtime, cell.latency_ms, cell.latency_frames, cell.schedule.c_str(),
+                   cell.prefracture, cell.runtime, cell.summaries.value_or("latency_ms", 0.0),
+                   cell.summaries.value_or("latency_frames", 0.0), cell.schedule.c_str(),
                    grid->latency_budget_ms);
   return exit_gate_failed;
 }

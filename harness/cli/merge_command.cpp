@@ -3,7 +3,7 @@
 #include "harness/output/output_targets.h"
 #include "harness/results/grid_merge.h"
 #include "harness/results/grid_reader.h"
-#include "harness/results/grid_report.h"
+#include "harness/results/grid_reporter.h"
 
 #include <filesystem>
 #include <iostream>
@@ -32,11 +32,12 @@ int run_merge(const MergeOptions& o) {
   }
   Result<StoredGrid> merged = merge_grids(parts, o.repetitions ? MergeParts::repetitions : MergeParts::shards);
   if (!merged) return fail_input(merged.error().message);
-  const std::string json = grid_to_json(merged->grid, merged->case_block, merged->context).dump(1) + "\n";
-  const std::string table = grid_to_csv(merged->grid);
+  const GridReport report{merged->grid, merged->case_name, merged->case_block, merged->context};
+  const std::string json = make_grid_reporter("json")->render(report);
+  const std::string table = make_grid_reporter("csv")->render(report);
   const FileContent set[] = {{o.out, json}, {csv, table}};
   if (Status s = write_files_atomically(set); !s) return fail_input("--out: " + s.error().message);
-  std::cout << grid_to_markdown(merged->grid, merged->case_name) << std::flush;
+  std::cout << make_grid_reporter("markdown")->render(report) << std::flush;
   return merged->grid.passed() || merged->metric == "instructions" ? exit_ok : exit_gate_failed;
 }
 

@@ -1,6 +1,7 @@
 #include "algorithms/registry/registries.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
+#include "harness/cases/run_settings.h"
 #include "harness/cli/command.h"
 #include "harness/pipeline/case_structure.h"
 
@@ -83,7 +84,9 @@ void print_table(const std::string& case_name, const std::string& model, const S
 int run_stress(const StressOptions& o, const Registries& registries) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
-  const std::string model_name = o.model.empty() ? c->stress.model : o.model;
+  CaseOverrides over;
+  over.stress_model = o.model;
+  const std::string model_name = resolve_settings(*c, over).stress_model;
   auto model = registries.stress_models.create(model_name, settings_for(model_name, c->stress.model, c->stress.settings));
   if (!model) return fail_input((o.model.empty() ? c->name + ": stress.model: " : "--model: ") + model.error().message);
   Result<CaseStructure> structure = build_case_structure(*c, registries);

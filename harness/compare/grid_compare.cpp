@@ -115,8 +115,8 @@ ComparisonRow accuracy_row(const GridCell& base, const GridCell& next, const Acc
   r.cell = cell_name(base);
   r.what = "accuracy";
   std::vector<std::string> failed;
-  const CellError& b = base.error;
-  const CellError& n = next.error;
+  const CellAccuracy& b = base.accuracy;
+  const CellAccuracy& n = next.accuracy;
   if (n.prefracture_volume_error > b.prefracture_volume_error + t.volume_error)
     failed.push_back(fmt::format("pre-fracture volume error {:.3g} -> {:.3g}", b.prefracture_volume_error,
                                  n.prefracture_volume_error));

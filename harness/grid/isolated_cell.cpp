@@ -1,8 +1,8 @@
 #include "harness/grid/isolated_cell.h"
 
 #include "harness/results/grid_reader.h"
-#include "harness/results/grid_report.h"
 #include "harness/process/isolated_run.h"
+#include "harness/results/grid_json_reporter.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

@@ -5,7 +5,7 @@
 /// Design note: the child does the whole cell, every repetition, and times it itself, exactly as the
 /// grid does without a limit; the fork, the pipe and the JSON round trip happen before and after the
 /// measured runs, so they add nothing to a frame or a stage. The cell comes back as the results JSON's
-/// own cell object (grid_report.h), whose doubles round-trip exactly, so a cell run in a child writes
+/// own cell object (grid_json_reporter.h), whose doubles round-trip exactly, so a cell run in a child writes
 /// the same results as one run in the process. Pages the child first writes after the fork are copied
 /// then (copy-on-write); the parent's heap holds the prepared case and the cells already done, which
 /// the child does not write, so those copies are few and fall mostly in the pre-fracture setup, which
@@ -13,7 +13,7 @@
 /// reason. docs/design.md, "Grid cell time limit", weighs this against a deadline checked per frame.
 
 #include "algorithms/core/result.h"
-#include "harness/grid/grid_runner.h"
+#include "harness/results/grid_record.h"
 
 #include <functional>
 

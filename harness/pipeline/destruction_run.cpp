@@ -44,6 +44,18 @@ void record_latencies(RunResult& r, const std::vector<RuntimeEvent>& events) {
 
 }  // namespace
 
+RunSettings run_settings(const Case& c, const RunOptions& o) {
+  CaseOverrides over;
+  over.prefracture_fracturer = o.prefracture_fracturer;
+  over.runtime_fracturer = o.runtime_fracturer;
+  over.stress_model = o.stress_model;
+  over.prefracture_fragments = o.prefracture_fragments;
+  over.runtime_fragments = o.runtime_fragments;
+  over.frames = o.frames;
+  over.schedule = o.schedule;
+  return resolve_settings(c, over);
+}
+
 Result<PreparedCase> prepare_case(Case c) {
   Result<Solid> solid = build_case_solid(c);
   if (!solid) return solid.error();
@@ -58,9 +70,9 @@ Result<RunResult> run_destruction(const PreparedCase& prepared, const RunOptions
   instruction_marks::set_frame(-1);
   if (Status s = run_setup(run); !s) return s.error();
   run.result.runtime_seed = c.prefracture.seed + options.repetition;
-  run.result.schedule = options.schedule.value_or(c.schedule.mode);
+  run.result.schedule = run.settings.schedule;
 
-  const int frames = options.frames > 0 ? options.frames : c.frames;
+  const int frames = run.settings.frames;
   std::vector<RuntimeEvent> events =
       events_in_landing_order(c.impacts, frames, run.result.schedule, c.schedule.prefetch_frames);
   if (Status s = run_frames(run, events, frames); !s) return s.error();

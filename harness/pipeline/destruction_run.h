@@ -36,6 +36,7 @@
 #include "algorithms/stress/stress_model.h"
 #include "harness/cases/case.h"
 #include "harness/cases/load_solid.h"
+#include "harness/cases/run_settings.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "harness/pipeline/prefracture_cache.h"
 #include "harness/pipeline/stage.h"
@@ -56,7 +57,7 @@ struct PreparedCase {
 /// Builds and validates `c`'s solid. Errors name the case and the mesh key.
 Result<PreparedCase> prepare_case(Case c);
 
-/// What one run does; empty names and zero counts take the case's values.
+/// What one run does; empty names and zero counts take the case's values (run_settings).
 struct RunOptions {
   int prefracture_fragments = 0;      ///< pre-fracture count (0: the case's; unused for explicit planes)
   int runtime_fragments = 0;          ///< pieces per hit fragment (0: the case's runtime.fragments)
@@ -131,6 +132,9 @@ struct RunResult {
   FractureMetrics prefracture_error;        ///< error figures of the pre-fracture (untimed)
   RuntimeFractureError runtime_error;       ///< error figures of the runtime fracture (untimed)
 };
+
+/// The settings of one run of `c` with `options` (resolve_settings).
+RunSettings run_settings(const Case& c, const RunOptions& options);
 
 /// Runs `prepared` once with `options`. Errors (unknown algorithm names with the case key or option,
 /// an anchor region touching no fragment, a failed fracture or solve) name what failed.

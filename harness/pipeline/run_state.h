@@ -30,11 +30,16 @@ struct FadingPiece {
 struct RunState {
   /// A run of `prepared` with `options` and the plugins of `plugins`; all must outlive the state.
   RunState(const PreparedCase& prepared, const RunOptions& run_options, const Registries& plugins)
-      : spec(prepared.spec), solid(prepared.solid), options(run_options), registries(plugins) {}
+      : spec(prepared.spec),
+        solid(prepared.solid),
+        options(run_options),
+        settings(run_settings(prepared.spec, run_options)),
+        registries(plugins) {}
 
   const Case& spec;            ///< the case
   const Solid& solid;          ///< its validated solid
   const RunOptions& options;   ///< what this run overrides
+  const RunSettings settings;  ///< the options over the case's values (run_settings)
   const Registries& registries;  ///< where the run's fracturers and stress model come from
   StagePlan plan;              ///< the stages the case's needs imply
   RunResult result;            ///< everything measured and produced so far

@@ -10,6 +10,7 @@
 /// the runtime event's stages and the physics steps). Only the second counts against the frame budget.
 
 #include "harness/pipeline/instruction_marks.h"
+#include "harness/results/stage_times.h"
 
 #include <array>
 #include <chrono>
@@ -19,39 +20,6 @@
 #include <vector>
 
 namespace shatter {
-
-/// The stages in data-flow order.
-enum class Stage : int {
-  prefracture,       ///< offline fracture of the solid (cached on disk)
-  bonds,             ///< support graph and anchors
-  runtime_fracture,  ///< the impact fractures the fragment(s) it reaches
-  bond_update,       ///< bonds of the fractured fragments are removed
-  stress,            ///< stress solve, break, re-solve until stable
-  falling_clusters,  ///< components with no path to an anchor fall
-  colliders,         ///< Bullet convex hulls with exact mass properties
-  physics,           ///< Bullet steps of 1/60 s
-  debris,            ///< debris and dust particles: spawned per event, integrated each frame
-};
-
-/// Number of stages.
-inline constexpr std::size_t kStageCount = 9;
-
-/// Every stage in data-flow order.
-inline constexpr std::array<Stage, kStageCount> kAllStages = {
-    Stage::prefracture, Stage::bonds,     Stage::runtime_fracture, Stage::bond_update,
-    Stage::stress,      Stage::falling_clusters, Stage::colliders,  Stage::physics, Stage::debris};
-
-/// The stage's name in results and tables, e.g. "runtime_fracture".
-std::string_view stage_name(Stage stage);
-
-/// Milliseconds per stage.
-using StageTimes = std::array<double, kStageCount>;
-
-/// One skip: the stage (or the part of it) that did not run, and why.
-struct StageSkip {
-  std::string stage;   ///< stage name
-  std::string reason;  ///< one line, e.g. "no anchors: every component falls, nothing to solve"
-};
 
 /// Which stages ran and which were skipped in one run. A stage can be in both lists when part of its
 /// work was skipped (the fragments outside an impact's radius are not fractured).

@@ -3,7 +3,7 @@
 /// (harness/pipeline/instruction_marks.h) and attaching them to a grid's samples.
 
 #include "algorithms/core/result.h"
-#include "harness/grid/grid_runner.h"
+#include "harness/results/grid_record.h"
 
 #include <filesystem>
 #include <string>

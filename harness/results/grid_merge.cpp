@@ -1,6 +1,7 @@
 #include "harness/results/grid_merge.h"
 
-#include "harness/results/grid_report.h"
+#include "harness/results/cell_summary.h"
+#include "harness/results/grid_json_reporter.h"
 
 #include <fmt/core.h>
 
@@ -45,7 +46,7 @@ Result<StoredGrid> join_repetitions(const std::vector<StoredGrid>& parts, Stored
                                  parts.front().path.string(), cell_name(c))};
       if (!c.failed.empty() && into.failed.empty()) into.failed = c.failed;  // failed in one run: failed
       into.samples.insert(into.samples.end(), c.samples.begin(), c.samples.end());
-      add_cell_error(into.error, c.error);
+      add_cell_accuracy(into.accuracy, c.accuracy);
       add_cell_stages(into, c.stages_run, c.stages_skipped);
     }
     out.grid.repetitions += p.grid.repetitions;

@@ -1,9 +1,11 @@
 #include "harness/results/grid_reader.h"
 
-#include "harness/results/grid_report.h"
 #include "algorithms/core/bounded_read.h"
 #include "harness/limits.h"
+#include "harness/results/cell_summary.h"
+#include "harness/results/grid_json_reporter.h"
 #include "harness/results/json_finite.h"
+#include "harness/results/run_figures.h"
 
 #include <fmt/core.h>
 
@@ -102,7 +104,95 @@ InstructionCounts instructions(const Json& j, const std::string& path) {
   return c;
 }
 
-GridSample sample(const Json& j, const std::string& path) {
+/// Keys of a sample that are not figures of its record.
+bool typed_sample_key(const std::string& key) {
+  static const char* const typed[] = {"seed",      "frame_ms", "event_ms", "event_frame", "worst_frame_ms",
+                                      "stages_ms", "setup_ms", "cpu",      "calibration_ms", "instructions"};
+  for (const char* t : typed)
+    if (key == t) return true;
+  return false;
+}
+
+/// The value of figure `spec` at `key` of `j`, checked against its kind.
+double figure_value(const Json& j, const std::string& key, const FigureSpec& spec, const std::string& path) {
+  switch (spec.kind) {
+    case FigureKind::integer: return integer(j, key, path);
+    case FigureKind::flag: return boolean(j, key, path) ? 1.0 : 0.0;
+    case FigureKind::number: return number(j, key, path);
+  }
+  return 0.0;
+}
+
+/// A figure this build does not know, from its JSON value: its kind from the value's type, shown in
+/// every output, summarised by median when `summarised` (its cell holds a summary of it).
+FigureSpec unknown_figure(const std::string& name, const Json& v, bool summarised, const std::string& path) {
+  FigureSpec spec;
+  spec.name = name;
+  if (v.is_boolean()) spec.kind = FigureKind::flag;
+  else if (v.is_number_integer()) spec.kind = FigureKind::integer;
+  else if (v.is_number()) spec.kind = FigureKind::number;
+  else throw BadKey(join(path, name) + ": expected a number, true or false");
+  spec.summary = summarised ? CellSummary::median : CellSummary::none;
+  return spec;
+}
+
+/// Appends to `out` every leaf of `j` not yet in it, named by its dotted path under `prefix`.
+void leaves(const Json& j, const std::string& prefix, std::vector<std::pair<std::string, const Json*>>& out) {
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    const std::string name = prefix.empty() ? it.key() : prefix + "." + it.key();
+    if (it->is_object()) leaves(*it, name, out);
+    else out.emplace_back(name, &*it);
+  }
+}
+
+/// The value at dotted `name` in `j`, or null.
+const Json* at_path(const Json& j, const std::string& name) {
+  const Json* at = &j;
+  std::size_t start = 0;
+  for (std::size_t dot = name.find('.'); ; dot = name.find('.', start)) {
+    const std::string key = name.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    if (!at->is_object()) return nullptr;
+    const auto it = at->find(key);
+    if (it == at->end()) return nullptr;
+    at = &*it;
+    if (dot == std::string::npos) return at;
+    start = dot + 1;
+  }
+}
+
+/// The record of a sample: every known run figure in its order (a missing optional one at its
+/// fallback, a missing required one an error), then every other figure of the sample in file order.
+/// `cell` (the cell object, or null) tells which unknown figures a cell summarises.
+FigureRecord sample_figures(const Json& j, const std::string& path, const Json* cell = nullptr) {
+  FigureRecord out;
+  for (const FigureSpec& spec : run_figure_specs()) {
+    const std::size_t dot = spec.name.rfind('.');
+    const std::string parent = dot == std::string::npos ? "" : spec.name.substr(0, dot);
+    const std::string key = dot == std::string::npos ? spec.name : spec.name.substr(dot + 1);
+    const Json* holder = parent.empty() ? &j : at_path(j, parent);
+    if (holder == nullptr) at(j, parent, path);  // throws "parent: missing"
+    if (!spec.required && !holder->contains(key)) {
+      out.add(spec, spec.fallback);
+      continue;
+    }
+    out.add(spec, figure_value(*holder, key, spec, (parent.empty() ? path : join(path, parent))));
+  }
+  std::vector<std::pair<std::string, const Json*>> all;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (typed_sample_key(it.key())) continue;
+    if (it->is_object()) leaves(*it, it.key(), all);
+    else all.emplace_back(it.key(), &*it);
+  }
+  for (const auto& [name, v] : all) {
+    if (out.find(name) != nullptr) continue;
+    const bool summarised = cell != nullptr && at_path(*cell, name) != nullptr;
+    const FigureSpec spec = unknown_figure(name, *v, summarised, path);  // throws unless a number or flag
+    out.add(spec, v->is_boolean() ? (v->get<bool>() ? 1.0 : 0.0) : v->get<double>());
+  }
+  return out;
+}
+
+GridSample sample(const Json& j, const std::string& path, const Json* cell) {
   GridSample s;
   s.seed = seed_value(j, "seed", path);
   s.frame_ms = numbers(j, "frame_ms", path);
@@ -115,40 +205,8 @@ GridSample sample(const Json& j, const std::string& path) {
   s.worst_frame_cpu_ms = number(cpu, "worst_frame_ms", join(path, "cpu"));
   s.stages_cpu_ms = stages(cpu, "stages_ms", join(path, "cpu"));
   s.calibration_ms = number(j, "calibration_ms", path);
-  s.cache_hit = boolean(j, "cache_hit", path);
-  s.fragments = static_cast<int>(integer(j, "fragments", path));
-  s.hit = static_cast<int>(integer(j, "hit", path));
-  s.pieces = static_cast<int>(integer(j, "pieces", path));
-  s.broken_bonds = static_cast<int>(integer(j, "broken_bonds", path));
-  s.falling_clusters = static_cast<int>(integer(j, "falling_clusters", path));
-  s.bodies = static_cast<int>(integer(j, "bodies", path));
-  const Json& solver = at(j, "solver", path);
-  const std::string sp = join(path, "solver");
-  s.solver.solves = static_cast<int>(integer(solver, "solves", sp));
-  s.solver.iterations = static_cast<int>(integer(solver, "iterations", sp));
-  s.solver.converged = boolean(solver, "converged", sp);
-  s.solver.residual = number(solver, "residual", sp);
-  s.solver.unknowns = static_cast<int>(integer(solver, "unknowns", sp));
+  s.figures = sample_figures(j, path, cell);
   if (j.contains("instructions")) s.instructions = instructions(j.at("instructions"), join(path, "instructions"));
-  // Schedule keys (docs/results.md): absent in files written before them, read as "no event seen".
-  const auto optional_int = [&](const char* key, int& out) {
-    if (j.contains(key)) out = static_cast<int>(integer(j, key, path));
-  };
-  const auto optional_number = [&](const char* key, double& out) {
-    if (j.contains(key)) out = number(j, key, path);
-  };
-  optional_number("latency_ms", s.latency_ms);
-  optional_int("latency_frames", s.latency_frames);
-  optional_int("latency_after_impact_frames", s.latency_after_impact_frames);
-  optional_int("trigger_frame", s.trigger_frame);
-  optional_int("visible_frame", s.visible_frame);
-  optional_int("event_steps", s.event_steps);
-  optional_number("largest_step_ms", s.largest_step_ms);
-  optional_number("worst_work_ms", s.worst_work_ms);
-  optional_int("bodies_peak", s.bodies_peak);
-  optional_int("faded", s.faded);
-  optional_int("particles_spawned", s.particles_spawned);
-  optional_int("particles_peak", s.particles_peak);
   return s;
 }
 
@@ -184,16 +242,16 @@ GridCell cell(const Json& j, const std::string& path, double latency_budget_ms) 
   const Json& pre = at(e, "prefracture", ep);
   const Json& run = at(e, "runtime", ep);
   const Json& st = at(e, "stress", ep);
-  c.error.prefracture_volume_error = number(pre, "volume_error", ep + ".prefracture");
-  c.error.prefracture_partition_error = number(pre, "partition_error", ep + ".prefracture");
-  c.error.prefracture_all_closed = boolean(pre, "all_closed", ep + ".prefracture");
-  c.error.prefracture_min_fragment_volume = number(pre, "min_fragment_volume", ep + ".prefracture");
-  c.error.runtime_volume_error = number(run, "volume_error", ep + ".runtime");
-  c.error.runtime_partition_error = number(run, "partition_error", ep + ".runtime");
-  c.error.runtime_all_closed = boolean(run, "all_closed", ep + ".runtime");
-  c.error.runtime_min_fragment_volume = number(run, "min_fragment_volume", ep + ".runtime");
-  c.error.solver_converged = boolean(st, "converged", ep + ".stress");
-  c.error.solver_residual = number(st, "residual", ep + ".stress");
+  c.accuracy.prefracture_volume_error = number(pre, "volume_error", ep + ".prefracture");
+  c.accuracy.prefracture_partition_error = number(pre, "partition_error", ep + ".prefracture");
+  c.accuracy.prefracture_all_closed = boolean(pre, "all_closed", ep + ".prefracture");
+  c.accuracy.prefracture_min_fragment_volume = number(pre, "min_fragment_volume", ep + ".prefracture");
+  c.accuracy.runtime_volume_error = number(run, "volume_error", ep + ".runtime");
+  c.accuracy.runtime_partition_error = number(run, "partition_error", ep + ".runtime");
+  c.accuracy.runtime_all_closed = boolean(run, "all_closed", ep + ".runtime");
+  c.accuracy.runtime_min_fragment_volume = number(run, "min_fragment_volume", ep + ".runtime");
+  c.accuracy.solver_converged = boolean(st, "converged", ep + ".stress");
+  c.accuracy.solver_residual = number(st, "residual", ep + ".stress");
   c.within_budget = boolean(j, "within_budget", path);
   for (const Json& name : array(j, "stages_run", path)) {
     if (!name.is_string()) throw BadKey(join(path, "stages_run") + ": expected strings");
@@ -205,17 +263,23 @@ GridCell cell(const Json& j, const std::string& path, double latency_budget_ms) 
     c.stages_skipped.push_back({text(skipped[i], "stage", sp), text(skipped[i], "reason", sp)});
   }
   const Json& samples = array(j, "samples", path);
-  for (std::size_t i = 0; i < samples.size(); ++i) c.samples.push_back(sample(samples[i], fmt::format("{}.samples[{}]", path, i)));
+  for (std::size_t i = 0; i < samples.size(); ++i)
+    c.samples.push_back(sample(samples[i], fmt::format("{}.samples[{}]", path, i), &j));
   if (c.samples.empty()) throw BadKey(join(path, "samples") + ": no samples");
-  summarise_schedule(c, latency_budget_ms);
+  // Summaries as written; a file from before a summarised figure has it recomputed from the samples.
+  summarise_cell_figures(c, latency_budget_ms);
   if (j.contains("schedule")) c.schedule = text(j, "schedule", path);
-  if (j.contains("latency_ms")) c.latency_ms = number(j, "latency_ms", path);
-  if (j.contains("latency_frames")) c.latency_frames = number(j, "latency_frames", path);
+  FigureRecord summaries;
+  for (const Figure& fig : c.summaries.figures()) {
+    const std::size_t dot = fig.spec.name.rfind('.');
+    const std::string parent = dot == std::string::npos ? "" : fig.spec.name.substr(0, dot);
+    const std::string key = dot == std::string::npos ? fig.spec.name : fig.spec.name.substr(dot + 1);
+    const Json* holder = parent.empty() ? &j : at_path(j, parent);
+    const bool written = holder != nullptr && holder->is_object() && holder->contains(key);
+    summaries.add(fig.spec, written ? figure_value(*holder, key, fig.spec, (parent.empty() ? path : join(path, parent))) : fig.value);
+  }
+  c.summaries = std::move(summaries);
   if (j.contains("within_latency_budget")) c.within_latency_budget = boolean(j, "within_latency_budget", path);
-  if (j.contains("largest_step_ms")) c.largest_step_ms = number(j, "largest_step_ms", path);
-  if (j.contains("bodies")) c.bodies = number(j, "bodies", path);
-  if (j.contains("bodies_peak")) c.bodies_peak = number(j, "bodies_peak", path);
-  if (j.contains("particles_peak")) c.particles_peak = number(j, "particles_peak", path);
   return c;
 }
 

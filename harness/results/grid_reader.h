@@ -2,7 +2,7 @@
 /// Reading a grid results JSON (docs/results.md) back, for `compare`, `merge` and `report`.
 
 #include "algorithms/core/result.h"
-#include "harness/grid/grid_runner.h"
+#include "harness/results/grid_record.h"
 #include "harness/results/run_context.h"
 
 #include <nlohmann/json.hpp>

@@ -46,12 +46,19 @@ std::string junit_xml(const std::vector<JunitSuite>& suites) {
     for (const JunitCase& c : s.cases) {
       out += fmt::format("    <testcase name=\"{}\" classname=\"{}\" time=\"{:.6f}\"", escape(c.name), escape(c.classname),
                          c.time_s);
-      if (c.failure) {
-        out += fmt::format(">\n      <failure message=\"{}\">{}</failure>\n    </testcase>\n", escape(*c.failure),
-                           escape(*c.failure));
-      } else {
+      if (!c.failure && c.properties.empty()) {
         out += "/>\n";
+        continue;
       }
+      out += ">\n";
+      if (!c.properties.empty()) {
+        out += "      <properties>\n";
+        for (const auto& [name, value] : c.properties)
+          out += fmt::format("        <property name=\"{}\" value=\"{}\"/>\n", escape(name), escape(value));
+        out += "      </properties>\n";
+      }
+      if (c.failure) out += fmt::format("      <failure message=\"{}\">{}</failure>\n", escape(*c.failure), escape(*c.failure));
+      out += "    </testcase>\n";
     }
     out += "  </testsuite>\n";
   }

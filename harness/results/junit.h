@@ -4,6 +4,7 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace shatter {
@@ -14,6 +15,7 @@ struct JunitCase {
   std::string classname;               ///< e.g. "shatterbench.grid.building"
   double time_s = 0.0;                 ///< seconds
   std::optional<std::string> failure;  ///< message of the failure, when it failed
+  std::vector<std::pair<std::string, std::string>> properties;  ///< (name, value) of the case's properties
 };
 
 /// One suite of cases.

@@ -12,8 +12,11 @@
 #include "harness/compare/grid_compare.h"
 #include "harness/results/grid_merge.h"
 #include "harness/results/grid_reader.h"
-#include "harness/results/grid_report.h"
 #include "fixtures/structures.h"
+#include "harness/results/cell_summary.h"
+#include "harness/results/grid_csv_reporter.h"
+#include "harness/results/grid_json_reporter.h"
+#include "harness/results/grid_markdown_reporter.h"
 #include "tests/support/cli_runner.h"
 
 #include <catch2/catch.hpp>

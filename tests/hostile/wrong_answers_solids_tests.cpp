@@ -12,7 +12,7 @@
 #include "algorithms/core/primitives.h"
 #include "algorithms/core/shell_classification.h"
 #include "harness/cases/load_solid.h"
-#include "harness/grid/cell_checks.h"
+#include "harness/results/cell_checks.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "tests/support/cli_runner.h"
@@ -308,8 +308,8 @@ TEST_CASE("results: a fracture whose figures break a threshold fails that check,
   // run reports why elsewhere.
   GridCell cell;
   CHECK(failed_cell_checks(cell).empty());
-  cell.error.runtime_all_closed = false;
-  cell.error.prefracture_volume_error = 0.3;
+  cell.accuracy.runtime_all_closed = false;
+  cell.accuracy.prefracture_volume_error = 0.3;
   const std::vector<std::string> failed = failed_cell_checks(cell);
   REQUIRE(failed.size() == 2);
   CHECK(failed[0] == "pre-fracture: volume_error 0.3 > 1e-06");

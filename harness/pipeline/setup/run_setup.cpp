@@ -19,7 +19,7 @@ Status build_structure(RunState& run) {
   if (run.prefracturer)
     request.settings = settings_text(
         settings_for(run.prefracturer->name(), c.prefracture.fracturer, c.prefracture.settings));
-  request.fragments = o.prefracture_fragments > 0 ? o.prefracture_fragments : c.prefracture.fragments;
+  request.fragments = run.settings.prefracture_fragments;
   request.seed = c.prefracture.seed + o.repetition;
   request.cache = o.cache;
   request.read_cache = !o.no_skip;
@@ -101,23 +101,22 @@ void build_world(RunState& run) {
 
 Status create_run_algorithms(RunState& run) {
   const Case& c = run.spec;
-  const RunOptions& o = run.options;
   const Registries& reg = run.registries;
   if (!c.prefracture.explicit_planes()) {
-    const std::string& name = o.prefracture_fracturer.empty() ? c.prefracture.fracturer : o.prefracture_fracturer;
+    const std::string& name = run.settings.prefracture_fracturer;
     auto f = reg.fracturers.create(name, settings_for(name, c.prefracture.fracturer, c.prefracture.settings));
     if (!f) return Error{c.name + ": prefracture.fracturer: " + f.error().message};
     run.prefracturer = std::move(*f);
   }
-  const std::string& runtime = o.runtime_fracturer.empty() ? c.runtime.fracturer : o.runtime_fracturer;
+  const std::string& runtime = run.settings.runtime_fracturer;
   auto rf = reg.fracturers.create(runtime, settings_for(runtime, c.runtime.fracturer, c.runtime.settings));
   if (!rf) return Error{c.name + ": runtime.fracturer: " + rf.error().message};
   run.runtime_fracturer = std::move(*rf);
-  const std::string& model = o.stress_model.empty() ? c.stress.model : o.stress_model;
+  const std::string& model = run.settings.stress_model;
   auto m = reg.stress_models.create(model, settings_for(model, c.stress.model, c.stress.settings));
   if (!m) return Error{c.name + ": stress.model: " + m.error().message};
   run.stress_model = std::move(*m);
-  run.runtime_fragments = o.runtime_fragments > 0 ? o.runtime_fragments : c.runtime.fragments;
+  run.runtime_fragments = run.settings.runtime_fragments;
   run.loads.gravity = c.gravity;
   return {};
 }

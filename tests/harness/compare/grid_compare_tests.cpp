@@ -3,9 +3,12 @@
 
 #include "algorithms/core/random.h"
 #include "harness/compare/grid_compare.h"
-#include "harness/results/gbench_json.h"
+#include "harness/results/gbench_reporter.h"
 #include "harness/results/grid_merge.h"
-#include "harness/results/grid_report.h"
+#include "harness/results/cell_summary.h"
+#include "harness/results/grid_csv_reporter.h"
+#include "harness/results/grid_json_reporter.h"
+#include "harness/results/grid_markdown_reporter.h"
 #include "harness/results/junit.h"
 #include "tests/support/cli_runner.h"
 
@@ -156,13 +159,13 @@ TEST_CASE("compare: mismatched fingerprint, case or a missing cell fail with the
 TEST_CASE("compare: accuracy regresses against tolerances, not statistics", "[compare]") {
   const StoredGrid a = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
   StoredGrid b = a;
-  b.grid.cells[0].error.prefracture_volume_error = 1e-6;
-  b.grid.cells[1].error.runtime_all_closed = false;
+  b.grid.cells[0].accuracy.prefracture_volume_error = 1e-6;
+  b.grid.cells[1].accuracy.runtime_all_closed = false;
   const CompareReport r = compare_grids(a, b, {});
   CHECK(r.failed());
   CHECK(count_rows(r, Verdict::failed) == 2);
   StoredGrid within = a;
-  within.grid.cells[0].error.prefracture_volume_error = 5e-10;  // below the 1e-9 tolerance
+  within.grid.cells[0].accuracy.prefracture_volume_error = 5e-10;  // below the 1e-9 tolerance
   CHECK_FALSE(compare_grids(a, within, {}).failed());
 }
 
@@ -217,9 +220,9 @@ TEST_CASE("merge --repetitions: runs of the same cells join their samples, summa
   // Two runs of 3 repetitions whose worst frames are 3 f: f = 1 +- 0.05 and f = 2 +- 0.05.
   GridResult a = synthetic(3, 1.0, 0.05, 1);
   GridResult b = synthetic(3, 2.0, 0.05, 2);
-  a.cells[1].error.runtime_volume_error = 1e-12;
-  b.cells[1].error.runtime_volume_error = 3e-12;
-  b.cells[1].error.runtime_all_closed = false;
+  a.cells[1].accuracy.runtime_volume_error = 1e-12;
+  b.cells[1].accuracy.runtime_volume_error = 3e-12;
+  b.cells[1].accuracy.runtime_all_closed = false;
   Result<StoredGrid> joined = merge_grids({stored(a, context(), "a"), stored(b, context(), "b")}, MergeParts::repetitions);
   REQUIRE(joined);
   CHECK(joined->grid.repetitions == 6);
@@ -236,8 +239,8 @@ TEST_CASE("merge --repetitions: runs of the same cells join their samples, summa
     CHECK(c.worst_frame_ms == Approx(0.5 * (a_max + b_min)).epsilon(1e-12));
     CHECK(c.frame_ms.count == 24);
   }
-  CHECK(joined->grid.cells[1].error.runtime_volume_error == 3e-12);
-  CHECK_FALSE(joined->grid.cells[1].error.runtime_all_closed);
+  CHECK(joined->grid.cells[1].accuracy.runtime_volume_error == 3e-12);
+  CHECK_FALSE(joined->grid.cells[1].accuracy.runtime_all_closed);
   // Not the same cells, or another build: refused, naming the reason.
   GridResult one_cell = b;
   one_cell.cells.pop_back();
@@ -282,8 +285,8 @@ TEST_CASE("gbench output has Google Benchmark's keys", "[compare]") {
 
 TEST_CASE("junit: testsuites, counts and a failure element per failed case, escaped", "[compare]") {
   JunitSuite s{"shatterbench.grid.x", {}};
-  s.cases.push_back({"cell 10 x 5", "shatterbench.grid.x", 0.001, {}});
-  s.cases.push_back({"cell <100> & 25", "shatterbench.grid.x", 0.002, std::string("worst frame 40 ms > budget \"33\"")});
+  s.cases.push_back({"cell 10 x 5", "shatterbench.grid.x", 0.001, {}, {}});
+  s.cases.push_back({"cell <100> & 25", "shatterbench.grid.x", 0.002, std::string("worst frame 40 ms > budget \"33\""), {}});
   const std::string xml = junit_xml({s});
   CHECK(xml.rfind("<?xml version=\"1.0\" encoding=\"UTF-8\"?>", 0) == 0);
   CHECK(xml.find("<testsuites tests=\"2\" failures=\"1\">") != std::string::npos);

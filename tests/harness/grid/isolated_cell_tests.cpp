@@ -4,10 +4,13 @@
 
 #include "harness/compare/grid_compare.h"
 #include "harness/grid/isolated_cell.h"
-#include "harness/results/gbench_json.h"
+#include "harness/results/gbench_reporter.h"
 #include "harness/results/grid_merge.h"
 #include "harness/results/grid_reader.h"
-#include "harness/results/grid_report.h"
+#include "harness/results/cell_summary.h"
+#include "harness/results/grid_csv_reporter.h"
+#include "harness/results/grid_json_reporter.h"
+#include "harness/results/grid_markdown_reporter.h"
 #include "tests/support/cli_runner.h"
 
 #include <catch2/catch.hpp>
@@ -45,16 +48,16 @@ GridCell ran_cell() {
     s.event_ms = 2.0 / 3.0;
     s.event_frame = 1;
     s.stages_ms[static_cast<std::size_t>(Stage::physics)] = 0.1 + 0.2;
-    s.fragments = 101;
-    s.latency_ms = 50.0 / 3.0;
+    s.figures.set("fragments", 101);
+    s.figures.set("latency_ms", 50.0 / 3.0);
     c.samples.push_back(s);
   }
   c.worst_frame_ms = 0.1 + 1.0 / 6.0;
   c.frame_ms.median = 2.0 / 3.0;
-  c.error.prefracture_volume_error = 1.0 / 3.0 * 1e-12;
+  c.accuracy.prefracture_volume_error = 1.0 / 3.0 * 1e-12;
   c.stages_run = {"prefracture", "physics"};
   c.stages_skipped = {{"stress", "no anchors"}};
-  summarise_schedule(c, 50.0);
+  summarise_cell_figures(c, 50.0);
   return c;
 }
 

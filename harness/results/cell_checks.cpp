@@ -1,4 +1,4 @@
-#include "harness/grid/cell_checks.h"
+#include "harness/results/cell_checks.h"
 
 #include "harness/metrics/fracture_acceptance.h"
 
@@ -10,7 +10,7 @@ std::vector<std::string> failed_cell_checks(const GridCell& cell) {
   std::vector<std::string> failed;
   if (!cell.failed.empty()) return failed;
   const FractureAcceptance acceptance;
-  const CellError& e = cell.error;
+  const CellAccuracy& e = cell.accuracy;
   const auto check = [&](const char* stage, bool all_closed, double volume_error, double partition_error) {
     // Negated comparisons: a NaN figure fails too.
     if (!all_closed) failed.push_back(fmt::format("{}: all_closed: a fragment is not a valid solid", stage));

@@ -1,10 +1,12 @@
-#include "harness/results/gbench_json.h"
+#include "harness/results/gbench_reporter.h"
 
 #include "harness/results/sample_statistics.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <utility>
+#include <vector>
 
 namespace shatter {
 
@@ -13,6 +15,8 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
   using Json = nlohmann::ordered_json;
   Json benchmarks = Json::array();
   int family = 0;
+  // The cell's figures shown as counters (none: the entries carry no counters).
+  std::vector<std::pair<std::string, std::vector<double>>> counters;
   const auto add = [&](const std::string& name, const std::vector<double>& per_rep) {
     for (std::size_t k = 0; k < per_rep.size(); ++k) {
       benchmarks.push_back({{"name", name},
@@ -27,6 +31,7 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
                             {"real_time", per_rep[k]},
                             {"cpu_time", per_rep[k]},
                             {"time_unit", "ms"}});
+      for (const auto& [counter, values] : counters) benchmarks.back()[counter] = values[k];
     }
     const double median = median_of(per_rep);
     benchmarks.push_back({{"name", name + "_median"},
@@ -42,6 +47,8 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
                           {"real_time", median},
                           {"cpu_time", median},
                           {"time_unit", "ms"}});
+    for (const auto& [counter, values] : counters) benchmarks.back()[counter] = median_of(values);
+    counters.clear();
     ++family;
   };
   for (const GridCell& c : grid.cells) {
@@ -65,6 +72,12 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
     }
     std::vector<double> worst;
     for (const GridSample& s : c.samples) worst.push_back(s.worst_frame_ms);
+    for (const Figure& f : c.samples.front().figures.figures()) {
+      if ((f.spec.outputs & kFigureInGbench) == 0) continue;
+      std::vector<double> values;
+      for (const GridSample& s : c.samples) values.push_back(s.figures.value_or(f.spec.name, f.spec.fallback));
+      counters.emplace_back(f.spec.name, std::move(values));
+    }
     add(prefix + "worst_frame", worst);
     for (const Stage st : kAllStages) {
       std::vector<double> v;
@@ -84,6 +97,10 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
               {"library_build_type", context.build_type == "Debug" ? "debug" : "release"},
               {"shatterbench", to_json(context)}};
   return {{"context", ctx}, {"benchmarks", benchmarks}};
+}
+
+std::string GbenchGridReporter::render(const GridReport& r) const {
+  return grid_to_gbench_json(r.grid, r.case_name, r.context).dump(1) + "\n";
 }
 
 }  // namespace shatter

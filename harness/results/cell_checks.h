@@ -2,7 +2,7 @@
 /// The result checks of a grid cell: its pre-fracture and runtime fractures must be valid results
 /// by the same acceptance rule as `fracture` (fracture_acceptance.h).
 
-#include "harness/grid/grid_runner.h"
+#include "harness/results/grid_record.h"
 
 #include <string>
 #include <vector>
