@@ -1,5 +1,6 @@
 #include "harness/accuracy/fracture_accuracy.h"
 
+#include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 #include "algorithms/register_all.h"
 #include "harness/accuracy/fracture_replay.h"
@@ -24,7 +25,7 @@ struct Setting {
 };
 
 AccuracyPoint measure(const std::string& case_name, const Solid& solid, const std::optional<Impact>& impact,
-                      const Setting& s, const FractureAccuracyOptions& options) {
+                      const Setting& s, const FractureAccuracyOptions& options, SelfIntersectionVerdicts& verdicts) {
   AccuracyPoint p;
   p.family = "fracture";
   p.case_name = case_name;
@@ -39,6 +40,7 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
   params.fragments = s.fragments;
   params.seed = 1;
   params.impact = impact;
+  params.verdicts = &verdicts;
 
   std::vector<Fragment> fragments;
   for (int rep = 0; rep < options.repetitions; ++rep) {
@@ -99,6 +101,7 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
   const std::vector<std::string> names =
       options.fracturers.empty() ? default_accuracy_fracturers() : options.fracturers;
   std::vector<AccuracyPoint> points;
+  SelfIntersectionVerdicts verdicts;  // the solid is checked once for every setting and repetition
   for (const std::string& name : names) {
     for (const int n : options.fragments) {
       if (name == "fem-lite") {
@@ -106,14 +109,14 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
           FemLiteSettings settings;
           settings.resolution = resolution;
           Setting s{std::make_unique<FemLiteFracturer>(settings), n, resolution};
-          points.push_back(measure(case_name, solid, impact, s, options));
+          points.push_back(measure(case_name, solid, impact, s, options, verdicts));
         }
         continue;
       }
       Result<std::unique_ptr<Fracturer>> f = registries().fracturers.create(name);
       if (!f) return f.error();
       Setting s{std::move(*f), n, std::nullopt};
-      points.push_back(measure(case_name, solid, impact, s, options));
+      points.push_back(measure(case_name, solid, impact, s, options, verdicts));
     }
   }
   return points;

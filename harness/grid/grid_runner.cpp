@@ -2,6 +2,7 @@
 
 #include "harness/grid/cell_checks.h"
 
+#include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/register_all.h"
 #include "harness/grid/calibration.h"
@@ -277,7 +278,8 @@ GridCell grid_cell_settings(const Case& c, const GridOptions& o, int p, int r) {
   return cell;
 }
 
-Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, int p, int r, int& done, int total) {
+Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, int p, int r,
+                               SelfIntersectionVerdicts* verdicts, int& done, int total) {
   const Case& c = prepared.spec;
   GridCell cell = grid_cell_settings(c, o, p, r);
   const double budget_ms = o.budget_ms > 0 ? o.budget_ms : c.budget_ms;
@@ -295,6 +297,7 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     run.frames = o.frames > 0 ? o.frames : c.frames;
     run.no_skip = o.no_skip;
     run.cache = o.cache;
+    run.verdicts = verdicts;
     run.partition_samples = o.partition_samples;
     run.schedule = o.schedule.value_or(c.schedule.mode);
     instruction_marks::set_run(p, r, rep);
@@ -339,6 +342,8 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
     cells_here += static_cast<int>(i % static_cast<std::size_t>(o.shard_count)) == o.shard_index ? 1 : 0;
   const int total = cells_here * o.repetitions;
   int done = 0;
+  // The cells of a row break the same pre-fracture: its fragments are checked once for the whole grid.
+  SelfIntersectionVerdicts verdicts;
   std::size_t cell_index = 0;
   for (const int p : prefracture) {
     for (const int r : runtime) {
@@ -347,12 +352,12 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o) 
       if (o.cell_timeout_s > 0.0) {
         // The child runs and times the cell; its progress calls count on from `done` in its own copy.
         const int before = done;
-        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, p, r, done, total); },
+        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, p, r, &verdicts, done, total); },
                                  grid_cell_settings(c, o, p, r), o.cell_timeout_s, o.latency_budget_ms);
         done = before + o.repetitions;
         if (o.progress) o.progress(done, total);
       } else {
-        cell = run_grid_cell(prepared, o, p, r, done, total);
+        cell = run_grid_cell(prepared, o, p, r, &verdicts, done, total);
       }
       if (!cell) return cell.error();
       out.cells.push_back(std::move(*cell));

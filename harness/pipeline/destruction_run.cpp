@@ -107,6 +107,7 @@ class Run {
   std::unique_ptr<Fracturer> prefracturer_;
   std::unique_ptr<Fracturer> runtime_fracturer_;
   std::unique_ptr<StressModel> model_;
+  std::unique_ptr<StressSolver> stress_solver_;  // the standing structure's, kept across every event
   int runtime_fragments_ = 0;
   Loads loads_;
 
@@ -175,6 +176,7 @@ Status Run::prefracture() {
         FractureParams params;
         params.fragments = key.fragments;
         params.seed = key.seed;
+        params.verdicts = o_.verdicts;
         fragments = prefracturer_->fracture(solid_.mesh, params);
         if (!fragments) return Error{c_.name + ": prefracture: " + fragments.error().message};
       }
@@ -259,7 +261,8 @@ Status Run::stress_after(std::span<const int> hit, StageClocks& times) {
     if (r_.broken[b]) broken.push_back(static_cast<int>(b));
   PropagationSettings settings;
   settings.resolve_everything = o_.no_skip;
-  auto p = propagate(*model_, r_.graph, loads_, c_.material, broken, settings);
+  if (!stress_solver_) stress_solver_ = model_->make_solver(r_.graph, c_.material);
+  auto p = propagate(*stress_solver_, loads_, broken, settings);
   if (!p) return Error{c_.name + ": stress: " + p.error().message};
   for (std::size_t b = 0; b < r_.broken.size(); ++b)
     if (p->result.bonds[b].broken) r_.broken[b] = 1;
@@ -384,6 +387,7 @@ Status Run::step(PendingEvent& e) {
       FractureParams params;
       params.fragments = runtime_fragments_;
       params.impact = impact;
+      params.verdicts = o_.verdicts;
       const std::size_t k = e.pieces.size();
       params.seed = r_.runtime_seed + 1000003ULL * static_cast<std::uint64_t>(e.index) + k;
       auto p = runtime_fracturer_->fracture(r_.fragments[static_cast<std::size_t>(e.hit[k])].mesh, params);
