@@ -15,7 +15,7 @@
 #include "algorithms/fracture/voronoi/voronoi_cells.h"
 #include "algorithms/fracture/voronoi/voronoi_fracturer.h"
 #include "algorithms/fracture/voronoi/voronoi_sites.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/metrics/fracture_metrics.h"
 

@@ -9,7 +9,7 @@
 #include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <benchmark/benchmark.h>
 
@@ -37,7 +37,7 @@ const WallBlock& wall_block(int side) {
   static std::map<int, std::unique_ptr<WallBlock>> cache;
   auto& slot = cache[side];
   if (!slot) {
-    const SupportGraph g = test::block_wall(side, side);
+    const SupportGraph g = fixtures::block_wall(side, side);
     GraphStiffness stiffness(g, Material{});
     const std::vector<std::uint8_t> all(g.bonds.size(), 1), none(g.nodes.size(), 0);
     stiffness.assemble(all, none);
@@ -102,7 +102,7 @@ void cholesky_factorize(benchmark::State& state) {
 void cholesky_refactorize(benchmark::State& state) {
   const int side = static_cast<int>(state.range(0));
   const WallBlock& w = wall_block(side);
-  const SupportGraph g = test::block_wall(side, side);
+  const SupportGraph g = fixtures::block_wall(side, side);
   int hole = 0;
   double best = 1e300, x_mid = 0.0;
   for (const SupportNode& n : g.nodes) x_mid = std::max(x_mid, n.centroid.x());

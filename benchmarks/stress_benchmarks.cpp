@@ -8,9 +8,9 @@
 // on small 3D boxes shows the other end: dense blocks, few rounds. The main is in
 // fracture_benchmarks.cpp.
 #include "algorithms/core/random.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <benchmark/benchmark.h>
 
@@ -37,7 +37,7 @@ const SupportGraph& wall(int bonds) {
   auto& slot = cache[bonds];
   if (!slot) {
     const auto [nx, nz] = wall_sides(bonds);
-    slot = std::make_unique<SupportGraph>(test::block_wall(nx, nz));
+    slot = std::make_unique<SupportGraph>(fixtures::block_wall(nx, nz));
   }
   return *slot;
 }
@@ -144,12 +144,12 @@ const SupportGraph& box(int oblique) {
         cuts.push_back(p);
       }
     } else {
-      cuts = test::planes_at(0, test::even_cuts(-1.25, 1.25, 5));
-      for (const Plane& p : test::planes_at(1, test::even_cuts(-1.25, 1.25, 5))) cuts.push_back(p);
-      for (const Plane& p : test::planes_at(2, test::even_cuts(0.0, 2.5, 5))) cuts.push_back(p);
+      cuts = fixtures::planes_at(0, fixtures::even_cuts(-1.25, 1.25, 5));
+      for (const Plane& p : fixtures::planes_at(1, fixtures::even_cuts(-1.25, 1.25, 5))) cuts.push_back(p);
+      for (const Plane& p : fixtures::planes_at(2, fixtures::even_cuts(0.0, 2.5, 5))) cuts.push_back(p);
     }
-    slot = std::make_unique<SupportGraph>(test::graph_of(test::sliced_box({2.5, 2.5, 2.5}, {0.0, 0.0, 1.25}, cuts),
-                                                         {test::box_region({-2, -2, -0.1}, {2, 2, 0.1})}, 2400.0));
+    slot = std::make_unique<SupportGraph>(fixtures::graph_of(fixtures::sliced_box({2.5, 2.5, 2.5}, {0.0, 0.0, 1.25}, cuts),
+                                                         {fixtures::box_region({-2, -2, -0.1}, {2, 2, 0.1})}, 2400.0));
   }
   return *slot;
 }

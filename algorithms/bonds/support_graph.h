@@ -12,7 +12,7 @@
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
-#include "algorithms/fracture/fracturer.h"
+#include "algorithms/core/fragment.h"
 
 #include <Eigen/Core>
 

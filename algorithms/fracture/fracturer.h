@@ -6,7 +6,7 @@
 /// faces tagged surface or cut; the fragments partition the input (volumes sum to the input volume);
 /// the same input, parameters and seed give the same fragments in the same order.
 
-#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/fragment.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
 
@@ -36,12 +36,6 @@ struct FractureParams {
   /// Clean self-intersection verdicts the caller keeps between fractures (self_intersection_verdicts.h),
   /// or none: every input check then runs. Changes no output, only what is tested again.
   SelfIntersectionVerdicts* verdicts = nullptr;
-};
-
-/// One output fragment: a closed mesh and its mass properties (density 1).
-struct Fragment {
-  Mesh mesh;                 ///< closed, outward, faces tagged surface or cut
-  MassProperties mass;       ///< of `mesh`
 };
 
 /// A fracture algorithm. Implementations are stateless after construction and thread-compatible.

@@ -17,7 +17,7 @@
 /// tau / f_s), with criterion Tresca sqrt(s^2 + 4 tau^2) or von Mises sqrt(s^2 + 3 tau^2).
 
 #include "algorithms/bonds/support_graph.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/stress_model.h"
 

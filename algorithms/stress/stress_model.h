@@ -15,7 +15,7 @@
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <memory>
 #include <span>
@@ -121,8 +121,6 @@ class StressModel {
   }
 };
 
-/// Error unless every material constant is finite and in range (names the field).
-Status check_material(const Material& material);
 
 /// Error unless gravity and every point load are finite and refer to existing nodes.
 Status check_loads(const Loads& loads, const SupportGraph& graph);

@@ -2,7 +2,7 @@
 
 #include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/accuracy/fracture_replay.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"

@@ -1,6 +1,6 @@
 #include "harness/accuracy/stress_accuracy.h"
 
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "harness/accuracy/beam_reference.h"
 #include "harness/pipeline/case_structure.h"

@@ -11,7 +11,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/fracturer.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <cstdint>
 #include <filesystem>

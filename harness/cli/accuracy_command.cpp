@@ -1,7 +1,7 @@
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
 #include "algorithms/fracture/fem_lite/fem_lite_settings.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/accuracy/accuracy_output.h"
 #include "harness/accuracy/fracture_accuracy.h"
 #include "harness/accuracy/stress_accuracy.h"

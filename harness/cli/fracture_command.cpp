@@ -1,5 +1,5 @@
 #include "algorithms/fracture/fracture_limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
 #include "harness/output/output_targets.h"

@@ -1,4 +1,4 @@
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/cli/command.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"

@@ -1,4 +1,4 @@
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
 #include "harness/cli/command.h"

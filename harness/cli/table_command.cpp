@@ -1,7 +1,7 @@
 #include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
 #include "harness/metrics/fracture_acceptance.h"

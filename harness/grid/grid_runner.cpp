@@ -4,7 +4,7 @@
 
 #include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fracture_limits.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/grid/calibration.h"
 #include "harness/grid/isolated_cell.h"
 #include "harness/limits.h"

@@ -2,7 +2,7 @@
 
 #include "harness/results/grid_reader.h"
 #include "harness/results/grid_report.h"
-#include "harness/stability/isolated_run.h"
+#include "harness/process/isolated_run.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

@@ -1,5 +1,6 @@
 #pragma once
-/// A case's structure before any impact: the solid, its pre-fracture and the support graph.
+/// A case's structure before any impact: the solid, its pre-fracture and the support graph, built by the
+/// same offline setup as a destruction run (setup/offline_structure.h) at the case's own settings.
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"
@@ -18,12 +19,10 @@ struct CaseStructure {
   SupportGraph graph;                ///< bonds between the fragments, anchors from the case
 };
 
-/// Pre-fractures `c`'s solid (explicit planes with the plane-slice kernel, or the named fracturer) and
-/// builds its support graph at the case's density. Errors name the case key: an unknown fracturer
-/// (`prefracture.fracturer`), an anchor region that touches no fragment (`anchors[i]`).
-Result<std::vector<Fragment>> prefracture_case(const Case& c, const Solid& solid);
-
-/// The whole structure of `c`.
+/// The whole structure of `c`: its solid pre-fractured (explicit planes with the plane-slice kernel, or
+/// the case's fracturer, count and seed; no cache) and its support graph at the case's density. Errors
+/// name the case key: an unknown fracturer (`prefracture.fracturer`), an anchor region that touches no
+/// fragment (`anchors[i]`).
 Result<CaseStructure> build_case_structure(const Case& c);
 
 }  // namespace shatter

@@ -1,7 +1,12 @@
 #pragma once
 /// One destruction run of a case, frame by frame as a game runs it (DESIGN.md section 3): the offline
 /// setup (pre-fracture, bonds, the first stress solve, colliders), then `frames` frames of 1/60 s, each
-/// running the runtime event when an impact lands in it and one physics step. Every stage is timed.
+/// running the scheduled steps of the runtime event and one physics step. Every stage is timed.
+///
+/// The run is built from four parts (docs/pipeline.md section 7 names the files): the offline setup
+/// (setup/: shared with `stress` and the accuracy runs through setup/offline_structure.h), the runtime
+/// event as a sequence of phases (event/), one function per schedule mode (schedule/) and the frame
+/// loop (frame/); run_state.h is what they share.
 ///
 /// Design notes (the decisions DESIGN.md leaves open; docs/pipeline.md has the long form):
 /// - The standing structure is what is still held: the fragments of components with an anchor. They
@@ -81,7 +86,7 @@ struct EventLatency {
 
 /// Error figures of the runtime fracture, over every hit fragment and its pieces.
 struct RuntimeFractureError {
-  int hit = 0;                        ///< fragments fractured at runtime
+  int hit_count = 0;                  ///< fragments fractured at runtime
   int pieces = 0;                     ///< fragments they became
   double volume_error = 0.0;          ///< largest |sum of piece volumes - hit volume| / hit volume
   double partition_error = 0.0;       ///< largest partition error of one hit fragment's pieces

@@ -2,8 +2,9 @@
 /// The named stages of a destruction run (DESIGN.md section 3), their timers and the record of which
 /// ran and which were skipped, and why.
 ///
-/// Design note: a stage is a unit with a name and a clock, not a class hierarchy: the run is one
-/// straight sequence (destruction_run.cpp) and each stage is a function call wrapped in a StageTimer.
+/// Design note: a stage is a unit with a name and a clock, not a class hierarchy: the run is a
+/// sequence of setup functions, event phases and frame steps (docs/pipeline.md section 7), and each
+/// stage is a function call wrapped in a StageTimer.
 /// Times are kept per stage twice: `setup` (offline work before frame 0: pre-fracture, bonds, the
 /// first stress solve, the first colliders) and `frames` (work inside frames, summed over the run:
 /// the runtime event's stages and the physics steps). Only the second counts against the frame budget.

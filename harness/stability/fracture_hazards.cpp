@@ -5,7 +5,7 @@
 #include "algorithms/core/primitives.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/metrics/fracture_metrics.h"
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 #include "harness/stability/stability_battery.h"
 
 #include "harness/stability/fracture_hazards.h"
-#include "harness/stability/isolated_run.h"
+#include "harness/process/isolated_run.h"
 #include "harness/stability/stress_hazards.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "harness/stability/stress_hazards.h"
 
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 
 #include <cmath>

@@ -3,7 +3,7 @@
 #include "algorithms/bonds/section_moments.h"
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/mesh_io.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
@@ -11,7 +11,7 @@
 #include <filesystem>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 using Catch::Matchers::WithinRel;
 
 namespace {

@@ -5,7 +5,7 @@
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "tests/support/shapes.h"
 

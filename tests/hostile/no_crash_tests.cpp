@@ -12,7 +12,7 @@
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "algorithms/fracture/voronoi/voronoi_cells.h"
 #include "algorithms/fracture/voronoi/voronoi_fracturer.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "tests/support/cli_runner.h"
 
 #include <catch2/catch.hpp>

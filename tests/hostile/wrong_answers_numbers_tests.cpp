@@ -4,7 +4,7 @@
 // saturate or read NaN, and a damaged pre-fracture cache entry. Every input is generated here.
 
 #include "tests/hostile/hostile_support.h"
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "harness/cases/case_loader.h"
@@ -13,7 +13,7 @@
 #include "harness/results/grid_merge.h"
 #include "harness/results/grid_reader.h"
 #include "harness/results/grid_report.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 #include "tests/support/cli_runner.h"
 
 #include <catch2/catch.hpp>
@@ -54,8 +54,8 @@ void check_refused(const shatter::test::CliRun& r, const std::string& needle) {
 /// A cantilever of four slabs, anchored at x = 0, built by explicit cuts.
 SupportGraph cantilever_graph(double density) {
   const std::vector<Fragment> slabs =
-      test::sliced_box(Vec3(2.0, 0.2, 0.3), Vec3(1.0, 0.0, 0.0), test::planes_at(0, {0.5, 1.0, 1.5}));
-  return test::graph_of(slabs, {test::box_region(Vec3(-1, -1, -1), Vec3(0.001, 1, 1))}, density);
+      fixtures::sliced_box(Vec3(2.0, 0.2, 0.3), Vec3(1.0, 0.0, 0.0), fixtures::planes_at(0, {0.5, 1.0, 1.5}));
+  return fixtures::graph_of(slabs, {fixtures::box_region(Vec3(-1, -1, -1), Vec3(0.001, 1, 1))}, density);
 }
 
 /// A small valid case (a box cut in slabs, anchored at one end); `patch` is merged over it.

@@ -1,7 +1,7 @@
 // The frame pipeline: skipping is result-neutral, the cache returns what was computed, an impact that
 // reaches nothing fractures nothing, and a stress cascade after an impact drops what lost its support.
 
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
 #include "harness/pipeline/case_structure.h"

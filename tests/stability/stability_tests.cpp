@@ -1,7 +1,7 @@
 /// The stability battery: isolation, the verdicts of a few hazards, and the CLI command in quick form.
 
 #include "harness/stability/fracture_hazards.h"
-#include "harness/stability/isolated_run.h"
+#include "harness/process/isolated_run.h"
 #include "harness/stability/stability_battery.h"
 #include "harness/stability/stress_hazards.h"
 #include "tests/support/cli_runner.h"

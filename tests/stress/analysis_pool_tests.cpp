@@ -5,14 +5,14 @@
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/solved_systems.h"
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
 #include <numeric>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 namespace {
 

@@ -1,6 +1,6 @@
 // tresca and von-mises against beam theory and statics: cantilever, column, fixed-fixed beam.
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
@@ -8,7 +8,7 @@
 #include <cmath>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 namespace {
 

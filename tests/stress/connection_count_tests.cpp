@@ -1,12 +1,12 @@
 // connection-count: the seed's tests 79-90 (dissertation Appendix D) on the faithful heuristic.
 #include "algorithms/stress/connection_count/connection_count_model.h"
 #include "algorithms/stress/propagation.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 namespace {
 

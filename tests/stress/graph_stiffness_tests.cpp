@@ -4,7 +4,7 @@
 // pattern (stiffness_pattern.h) against K summed densely from the same bond blocks.
 #include "algorithms/core/random.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <Eigen/Dense>
 
@@ -15,7 +15,7 @@
 #include <vector>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 TEST_CASE("graph stiffness: assembling only the changed columns equals an assembly from scratch", "[stress]") {
   const SupportGraph g = block_wall(9, 8);

@@ -1,8 +1,8 @@
 // Propagation: failure order, falling clusters, anchoring after breaks, no NaN, bad inputs.
-#include "algorithms/register_all.h"
+#include "algorithms/registry/register_all.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
@@ -10,7 +10,7 @@
 #include <limits>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
-#include "tests/stress/structures.h"
+#include "fixtures/structures.h"
 
 #include <catch2/catch.hpp>
 
@@ -15,7 +15,7 @@
 #include <limits>
 
 using namespace shatter;
-using namespace shatter::test;
+using namespace shatter::fixtures;
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fem_lite/fem_loads.h"
 #include "algorithms/fracture/fem_lite/hex_grid.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <Eigen/Core>
 

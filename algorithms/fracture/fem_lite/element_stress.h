@@ -2,7 +2,7 @@
 /// Stresses of the fem-lite elements at their centres, and the largest principal stress.
 
 #include "algorithms/fracture/fem_lite/hex_grid.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <Eigen/Core>
 

@@ -1,6 +1,6 @@
 #include "algorithms/fracture/fem_lite/fem_lite_settings.h"
 
-#include "algorithms/stress/stress_model.h"
+#include "algorithms/core/material.h"
 
 #include <cmath>
 #include <string>

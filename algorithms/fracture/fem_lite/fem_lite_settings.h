@@ -3,7 +3,7 @@
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <vector>
 

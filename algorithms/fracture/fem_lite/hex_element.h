@@ -6,7 +6,7 @@
 /// order (xx, yy, zz, xy, yz, zx) with engineering shear strains.
 
 #include "algorithms/core/mesh.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <Eigen/Core>
 

@@ -5,7 +5,7 @@
 /// both build K from the same numbers.
 
 #include "algorithms/bonds/support_graph.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 
 #include <Eigen/Core>
 

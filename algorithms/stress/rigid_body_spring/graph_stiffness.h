@@ -13,7 +13,7 @@
 /// same pattern and its ordering and symbolic factorisation stay valid.
 
 #include "algorithms/bonds/support_graph.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 #include "algorithms/stress/rigid_body_spring/bond_spring.h"
 #include "algorithms/stress/rigid_body_spring/stiffness_pattern.h"
 

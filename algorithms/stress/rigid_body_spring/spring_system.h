@@ -14,7 +14,7 @@
 /// entries every bond leaves zero: stiffness_pattern.h).
 
 #include "algorithms/bonds/support_graph.h"
-#include "algorithms/stress/material.h"
+#include "algorithms/core/material.h"
 #include "algorithms/stress/rigid_body_spring/bond_spring.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/stress_model.h"

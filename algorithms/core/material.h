@@ -1,5 +1,7 @@
 #pragma once
-/// A brittle, linear-elastic material, SI units throughout. Read from the case file's "material".
+/// A brittle, linear-elastic material, SI units throughout. Read from the case file's "material"; used by
+/// the stress models and by fracturers that solve for stress (fem-lite).
+#include "algorithms/core/result.h"
 
 namespace shatter {
 
@@ -15,5 +17,8 @@ struct Material {
   /// Shear modulus G = E / (2 (1 + nu)), Pa.
   [[nodiscard]] double shear_modulus() const { return young_modulus / (2.0 * (1.0 + poisson_ratio)); }
 };
+
+/// Error unless every material constant is finite and in range (names the field).
+Status check_material(const Material& material);
 
 }  // namespace shatter

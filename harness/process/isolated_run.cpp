@@ -1,4 +1,4 @@
-#include "harness/stability/isolated_run.h"
+#include "harness/process/isolated_run.h"
 
 #include <cerrno>
 #include <chrono>

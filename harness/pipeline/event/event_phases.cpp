@@ -1,0 +1,212 @@
+#include "harness/pipeline/event/event_phases.h"
+
+#include "algorithms/fracture/local_fracture.h"
+#include "harness/pipeline/structure_response.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+#include <utility>
+
+namespace shatter {
+namespace {
+
+/// Seed of the runtime fracture of hit fragment `k` of event `index` (docs/pipeline.md section 1).
+std::uint64_t runtime_seed(const RunResult& r, int index, std::size_t k) {
+  return r.runtime_seed + 1000003ULL * static_cast<std::uint64_t>(index) + k;
+}
+
+/// Chooses the hit fragments (the first step of the phase). False when the impact reaches nothing.
+bool select_hit_fragments(RunState& run, RuntimeEvent& e) {
+  const Impact& impact = *e.impact;
+  NearImpactOptions near;
+  near.eligible = run.standing;
+  near.cull_by_box = !run.options.no_skip;
+  e.hit_fragments = fragments_near_impact(run.result.fragments, impact, near);
+  e.selected = true;
+  if (e.hit_fragments.empty()) {
+    run.result.stages.skipped(Stage::runtime_fracture,
+                              fmt::format("the impact at frame {} reaches no standing fragment (radius {} m): no "
+                                          "runtime fracture, nothing after it",
+                                          e.impact_frame, impact.radius));
+    return false;
+  }
+  if (!run.options.no_skip && impact.radius > 0) {
+    const auto standing = std::count(run.standing.begin(), run.standing.end(), std::uint8_t{1});
+    run.result.stages.skipped(
+        Stage::runtime_fracture,
+        fmt::format("{} of {} standing fragments outside the impact radius: not fractured, not copied",
+                    standing - static_cast<long>(e.hit_fragments.size()), standing));
+  }
+  return true;
+}
+
+/// One hit fragment per step (the first step also chooses them; an impact that reaches nothing ends
+/// the event).
+Status fracture_phase(RunState& run, RuntimeEvent& e) {
+  StageTimer timer(run.result.frame_stages, Stage::runtime_fracture);
+  if (!e.selected && !select_hit_fragments(run, e)) {
+    e.phase = EventPhase::done;
+    return {};
+  }
+  FractureParams params;
+  params.fragments = run.runtime_fragments;
+  params.impact = *e.impact;
+  const std::size_t k = e.pieces.size();
+  params.seed = runtime_seed(run.result, e.index, k);
+  const Fragment& target = run.result.fragments[static_cast<std::size_t>(e.hit_fragments[k])];
+  auto pieces = run.runtime_fracturer->fracture(target.mesh, params);
+  if (!pieces)
+    return Error{run.spec.name + ": runtime fracture at frame " + std::to_string(e.impact_frame) + ": " +
+                 pieces.error().message};
+  e.pieces.push_back(std::move(*pieces));
+  if (e.pieces.size() == e.hit_fragments.size()) {
+    run.result.stages.ran(Stage::runtime_fracture);
+    e.phase = phase_after(e.phase, event_route(run));
+  }
+  return {};
+}
+
+/// Every bond of a hit fragment breaks; the hit fragments leave the standing structure.
+Status bond_update_phase(RunState& run, RuntimeEvent& e) {
+  RunResult& r = run.result;
+  if (run.plan.bonds) {
+    StageTimer timer(r.frame_stages, Stage::bond_update);
+    for (const int f : e.hit_fragments)
+      for (const int b : r.graph.node_bonds[static_cast<std::size_t>(f)]) r.broken[static_cast<std::size_t>(b)] = 1;
+    r.stages.ran(Stage::bond_update);
+  } else {
+    r.stages.skipped(Stage::bond_update, "no bonds (case needs)");
+  }
+  for (const int f : e.hit_fragments) run.standing[static_cast<std::size_t>(f)] = 0;
+  e.phase = phase_after(e.phase, event_route(run));
+  return {};
+}
+
+/// The whole stress cascade in one step.
+Status stress_phase(RunState& run, RuntimeEvent& e) {
+  if (Status s = solve_structure_stress(run, /*after_hit=*/true, run.result.frame_stages); !s) return s;
+  e.phase = phase_after(e.phase, event_route(run));
+  return {};
+}
+
+/// The standing components that lost every anchor leave the standing structure.
+Status falling_clusters_phase(RunState& run, RuntimeEvent& e) {
+  StageTimer timer(run.result.frame_stages, Stage::falling_clusters);
+  e.falling = newly_falling_clusters(run);
+  for (const std::vector<int>& cluster : e.falling)
+    for (const int f : cluster) run.standing[static_cast<std::size_t>(f)] = 0;
+  run.result.stages.ran(Stage::falling_clusters);
+  e.phase = phase_after(e.phase, event_route(run));
+  return {};
+}
+
+/// A batch of pieces, or one falling cluster, per step: bodies prepared, not yet in the world.
+Status colliders_phase(RunState& run, RuntimeEvent& e) {
+  StageTimer timer(run.result.frame_stages, Stage::colliders);
+  const double density = run.spec.material.density;
+  std::size_t total = 0;
+  for (const auto& list : e.pieces) total += list.size();
+  if (e.piece_bodies.size() < total) {
+    std::size_t flat = 0;
+    const std::size_t until = std::min(total, e.piece_bodies.size() + kColliderBatch);
+    for (const auto& list : e.pieces)
+      for (const Fragment& p : list) {
+        if (flat >= e.piece_bodies.size() && flat < until) e.piece_bodies.push_back(run.world->prepare_fragment(p, density));
+        ++flat;
+      }
+  } else if (e.cluster_bodies.size() < e.falling.size()) {
+    std::vector<Fragment> members;
+    for (const int f : e.falling[e.cluster_bodies.size()])
+      members.push_back(run.result.fragments[static_cast<std::size_t>(f)]);
+    e.cluster_bodies.push_back(run.world->prepare_cluster(members, density));
+  }
+  if (e.piece_bodies.size() == total && e.cluster_bodies.size() == e.falling.size())
+    e.phase = phase_after(e.phase, event_route(run));
+  return {};
+}
+
+/// Hit and falling static bodies out, the prepared bodies in, the impulse shared by the pieces in
+/// proportion to their mass; small pieces start fading.
+void replace_bodies(RunState& run, const RuntimeEvent& e) {
+  StageTimer timer(run.result.frame_stages, Stage::colliders);
+  PhysicsWorld& world = *run.world;
+  const Impact& impact = *e.impact;
+  const double density = run.spec.material.density;
+  for (const int f : e.hit_fragments) world.remove(run.static_body[static_cast<std::size_t>(f)]);
+  double total_mass = 0.0;
+  for (const auto& list : e.pieces)
+    for (const Fragment& p : list) total_mass += density * p.mass.volume;
+  const Vec3 velocity_change = total_mass > 0 ? Vec3(impact.direction * (impact.impulse / total_mass)) : Vec3::Zero();
+  std::size_t flat = 0;
+  for (const auto& list : e.pieces) {
+    for (const Fragment& p : list) {
+      const int body = e.piece_bodies[flat++];
+      world.insert(body);
+      if (impact.impulse > 0) world.apply_impulse(body, velocity_change * (density * p.mass.volume), p.mass.centroid);
+      if (run.spec.fade_out.enabled && p.mass.volume < run.spec.fade_out.max_volume)
+        run.fading.push_back({body, run.frame});
+    }
+  }
+  for (std::size_t k = 0; k < e.falling.size(); ++k) {
+    for (const int f : e.falling[k]) world.remove(run.static_body[static_cast<std::size_t>(f)]);
+    world.insert(e.cluster_bodies[k]);
+  }
+}
+
+/// Debris particles for the new cut area, at the pieces' centroids.
+void spawn_debris(RunState& run, const RuntimeEvent& e) {
+  RunResult& r = run.result;
+  StageTimer timer(r.frame_stages, Stage::debris);
+  double area = 0.0;
+  std::vector<Vec3> origins;
+  for (std::size_t k = 0; k < e.hit_fragments.size(); ++k) {
+    area += new_cut_area(r.fragments[static_cast<std::size_t>(e.hit_fragments[k])], e.pieces[k]);
+    for (const Fragment& p : e.pieces[k]) origins.push_back(p.mass.centroid);
+  }
+  r.particles_spawned +=
+      run.debris->spawn(run.debris->count_for(area), origins, runtime_seed(r, e.index, 0) + 777767ULL);
+  r.stages.ran(Stage::debris);
+}
+
+/// The event's result takes part in the world from this frame's physics step on; its fragments, pieces
+/// and clusters join the run's result.
+Status make_visible_phase(RunState& run, RuntimeEvent& e) {
+  if (run.world) replace_bodies(run, e);
+  if (run.debris) spawn_debris(run, e);
+  RunResult& r = run.result;
+  for (std::size_t k = 0; k < e.hit_fragments.size(); ++k) {
+    r.hit.push_back(e.hit_fragments[k]);
+    r.pieces.push_back(std::move(e.pieces[k]));
+  }
+  for (std::vector<int>& cluster : e.falling) r.falling_clusters.push_back(std::move(cluster));
+  e.visible_frame = run.frame;
+  e.phase = phase_after(e.phase, event_route(run));
+  return {};
+}
+
+Status done_phase(RunState&, RuntimeEvent&) { return {}; }
+
+using PhaseStep = Status (*)(RunState&, RuntimeEvent&);
+
+/// One step function per phase, in EventPhase order.
+constexpr std::array<PhaseStep, kEventPhaseCount> kPhaseSteps = {
+    fracture_phase,         bond_update_phase, stress_phase, falling_clusters_phase,
+    colliders_phase,        make_visible_phase, done_phase};
+
+}  // namespace
+
+EventRoute event_route(const RunState& run) {
+  EventRoute route;
+  route.bonds = run.plan.bonds;
+  route.world = run.world != nullptr;
+  return route;
+}
+
+Status run_event_step(RunState& run, RuntimeEvent& event) {
+  return kPhaseSteps[static_cast<std::size_t>(event.phase)](run, event);
+}
+
+}  // namespace shatter

@@ -1,0 +1,57 @@
+#pragma once
+/// What one destruction run keeps from its setup to its last frame, shared by the pipeline's parts:
+/// the offline setup (setup/), the runtime event's phases (event/), the schedules (schedule/) and the
+/// frame loop (frame/).
+///
+/// Design note: one plain struct, not a class with private members, because each part is a free
+/// function over it; the run's outputs live in `result` from the start, so nothing is copied at the
+/// end. The case, the solid and the options are borrowed from the caller of run_destruction.
+
+#include "algorithms/fracture/fracturer.h"
+#include "algorithms/stress/stress_model.h"
+#include "harness/pipeline/debris_field.h"
+#include "harness/pipeline/destruction_run.h"
+#include "harness/pipeline/physics/physics_world.h"
+#include "harness/pipeline/stage_plan.h"
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+namespace shatter {
+
+/// A runtime piece that shrinks and then leaves the physics world (case key fade_out).
+struct FadingPiece {
+  int body = -1;           ///< its body in the physics world
+  int visible_frame = 0;   ///< the frame it entered the world
+};
+
+/// The state of one destruction run.
+struct RunState {
+  /// A run of `prepared` with `options`; both must outlive the state.
+  RunState(const PreparedCase& prepared, const RunOptions& run_options)
+      : spec(prepared.spec), solid(prepared.solid), options(run_options) {}
+
+  const Case& spec;            ///< the case
+  const Solid& solid;          ///< its validated solid
+  const RunOptions& options;   ///< what this run overrides
+  StagePlan plan;              ///< the stages the case's needs imply
+  RunResult result;            ///< everything measured and produced so far
+
+  std::unique_ptr<Fracturer> prefracturer;       ///< pre-fracture algorithm (none for explicit planes)
+  std::unique_ptr<Fracturer> runtime_fracturer;  ///< runtime algorithm
+  std::unique_ptr<StressModel> stress_model;     ///< stress model
+  int runtime_fragments = 0;                     ///< pieces requested per hit fragment
+  Loads loads;                                   ///< gravity of the case
+
+  std::vector<std::uint8_t> standing;   ///< per fragment: 1 while part of the held structure
+  std::vector<std::uint8_t> anchored;   ///< per fragment: 1 when it overlaps an anchor region
+  std::vector<int> static_body;         ///< per fragment: its static body in the world, or -1
+  std::unique_ptr<PhysicsWorld> world;  ///< the physics world (none when colliders are not needed)
+
+  int frame = 0;                        ///< the frame being run (setup: 0)
+  std::vector<FadingPiece> fading;      ///< runtime pieces fading out, in the order they entered
+  std::unique_ptr<DebrisField> debris;  ///< the particles (case key debris), or none
+};
+
+}  // namespace shatter

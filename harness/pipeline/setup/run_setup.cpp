@@ -1,0 +1,131 @@
+#include "harness/pipeline/setup/run_setup.h"
+
+#include "algorithms/registry/register_all.h"
+#include "algorithms/core/mesh.h"
+#include "harness/pipeline/setup/offline_structure.h"
+#include "harness/pipeline/structure_response.h"
+
+#include <string>
+#include <utility>
+
+namespace shatter {
+namespace {
+
+Status build_structure(RunState& run) {
+  const Case& c = run.spec;
+  const RunOptions& o = run.options;
+  RunResult& r = run.result;
+  OfflineSetupRequest request;
+  request.fracturer = run.prefracturer.get();
+  request.fragments = o.prefracture_fragments > 0 ? o.prefracture_fragments : c.prefracture.fragments;
+  request.seed = c.prefracture.seed + o.repetition;
+  request.cache = o.cache;
+  request.read_cache = !o.no_skip;
+  request.bonds = run.plan.bonds;
+  Result<OfflineStructure> structure = build_offline_structure(c, run.solid, request, r.setup, r.stages);
+  if (!structure) return structure.error();
+  r.prefracture_seed = structure->key.seed;
+  r.cache_hit = structure->cache_hit;
+  r.fragments = std::move(structure->fragments);
+  FractureMetricsOptions metrics;
+  metrics.partition_samples = o.partition_samples;
+  r.prefracture_error = fracture_metrics(run.solid.mesh, run.solid.mass, r.fragments, structure->key.fragments, metrics);
+  run.anchored = std::move(structure->anchored);
+  if (run.plan.bonds) {
+    r.graph = std::move(structure->graph);
+    r.broken.assign(r.graph.bonds.size(), 0);
+  }
+  run.standing.assign(r.fragments.size(), 1);
+  return {};
+}
+
+/// The structure under its own weight before anything hits it: what cannot stand breaks and falls now.
+Status settle(RunState& run) {
+  RunResult& r = run.result;
+  if (run.plan.bonds) {
+    if (Status s = solve_structure_stress(run, /*after_hit=*/false, r.setup); !s) return s;
+    StageTimer timer(r.setup, Stage::falling_clusters);
+    for (std::vector<int>& cluster : newly_falling_clusters(run)) {
+      for (const int f : cluster) run.standing[static_cast<std::size_t>(f)] = 0;
+      r.falling_clusters.push_back(std::move(cluster));
+    }
+    r.stages.ran(Stage::falling_clusters);
+  } else {
+    // Without bonds nothing holds a fragment but an anchor.
+    for (std::size_t f = 0; f < run.standing.size(); ++f) run.standing[f] = run.anchored[f];
+    r.stages.skipped(Stage::stress, "not needed (case needs)");
+    r.stages.skipped(Stage::falling_clusters, "no bonds: every fragment outside an anchor is loose");
+  }
+  return {};
+}
+
+/// The physics world: a ground at the solid's lowest point, every standing fragment a static body,
+/// every fragment loose from the start a dynamic body, every falling cluster one compound.
+void build_world(RunState& run) {
+  RunResult& r = run.result;
+  if (!run.plan.colliders) {
+    r.stages.skipped(Stage::colliders, "not needed (case needs)");
+    r.stages.skipped(Stage::physics, "not needed (case needs)");
+    return;
+  }
+  StageTimer timer(r.setup, Stage::colliders);
+  PhysicsSettings settings;
+  settings.gravity = run.spec.gravity;
+  settings.ground = true;
+  settings.ground_z = bounding_box(run.solid.mesh).min.z();
+  // A collider needs the outline, not every vertex: hulls of more than 64 points are reduced (about 42
+  // support points) so that a piece of a scanned mesh costs Bullet what a piece of a box does.
+  settings.max_hull_vertices = 64;
+  run.world = std::make_unique<PhysicsWorld>(settings);
+  const double density = run.spec.material.density;
+  run.static_body.assign(r.fragments.size(), -1);
+  for (std::size_t f = 0; f < r.fragments.size(); ++f) {
+    if (run.standing[f]) {
+      run.static_body[f] = run.world->add_fragment(r.fragments[f], density, /*is_static=*/true);
+    } else if (!run.plan.bonds) {
+      run.world->add_fragment(r.fragments[f], density);
+    }
+  }
+  std::vector<Fragment> members;
+  for (const std::vector<int>& cluster : r.falling_clusters) {
+    members.clear();
+    for (const int f : cluster) members.push_back(r.fragments[static_cast<std::size_t>(f)]);
+    run.world->add_cluster(members, density);
+  }
+  r.stages.ran(Stage::colliders);
+}
+
+}  // namespace
+
+Status create_run_algorithms(RunState& run) {
+  const Case& c = run.spec;
+  const RunOptions& o = run.options;
+  const auto& reg = registries();
+  if (!c.prefracture.explicit_planes()) {
+    const std::string& name = o.prefracture_fracturer.empty() ? c.prefracture.fracturer : o.prefracture_fracturer;
+    auto f = reg.fracturers.create(name);
+    if (!f) return Error{c.name + ": prefracture.fracturer: " + f.error().message};
+    run.prefracturer = std::move(*f);
+  }
+  const std::string& runtime = o.runtime_fracturer.empty() ? c.runtime.fracturer : o.runtime_fracturer;
+  auto rf = reg.fracturers.create(runtime);
+  if (!rf) return Error{c.name + ": runtime.fracturer: " + rf.error().message};
+  run.runtime_fracturer = std::move(*rf);
+  const std::string& model = o.stress_model.empty() ? c.stress.model : o.stress_model;
+  auto m = reg.stress_models.create(model);
+  if (!m) return Error{c.name + ": stress.model: " + m.error().message};
+  run.stress_model = std::move(*m);
+  run.runtime_fragments = o.runtime_fragments > 0 ? o.runtime_fragments : c.runtime.fragments;
+  run.loads.gravity = c.gravity;
+  return {};
+}
+
+Status run_setup(RunState& run) {
+  if (Status s = create_run_algorithms(run); !s) return s;
+  if (Status s = build_structure(run); !s) return s;
+  if (Status s = settle(run); !s) return s;
+  build_world(run);
+  return {};
+}
+
+}  // namespace shatter
