@@ -25,6 +25,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -76,8 +77,9 @@ void slice_once(benchmark::State& state, const Solid& solid, const std::string& 
   state.counters["partition_error"] = m.partition_error;
 }
 
-/// Input checks on a solid seen before are remembered (self_intersection.h): `first` forgets them before
-/// every fracture, so that each iteration is the solid's first fracture.
+/// Input checks on a solid seen before are remembered (self_intersection_verdicts.h): `again` keeps one
+/// memory for every iteration, `first` gives each fracture a new one, so that each iteration is the
+/// solid's first fracture.
 enum class Visit { again, first };
 
 void fracture_into(benchmark::State& state, const Registries& registries, const Solid& solid,
@@ -91,8 +93,10 @@ void fracture_into(benchmark::State& state, const Registries& registries, const 
   params.fragments = n;
   params.seed = 1;
   std::vector<Fragment> fragments;
+  std::unique_ptr<SelfIntersectionVerdicts> verdicts = std::make_unique<SelfIntersectionVerdicts>();
   for (auto _ : state) {
-    if (visit == Visit::first) forget_self_intersection_verdicts();
+    if (visit == Visit::first) verdicts = std::make_unique<SelfIntersectionVerdicts>();
+    params.verdicts = verdicts.get();
     auto out = (*fracturer)->fracture(solid.mesh, params);
     if (!out) {
       state.SkipWithError(out.error().message.c_str());

@@ -1,16 +1,16 @@
 // Stress models on block walls of about 100, 1,000 and 10,000 bonds: one evaluation, and the full
 // cascade after a block at the foot of the wall is knocked out. Each runs again and again on the same
-// wall: an evaluation carries a point load that moves from block to block with every iteration (the
-// same structure under new loads), so from the second iteration on the solver reuses the split and
-// factors of the unchanged stiffness (linear_solve.h) and its analyses (analysis_pool.h); the "cold"
-// variants drop all of that before every iteration (a graph seen for the first time). The cold cascade
+// wall with one solver kept for every iteration, as the pipeline keeps one per structure: an evaluation
+// carries a point load that moves from block to block with every iteration (the same structure under
+// new loads), so from the second iteration on the solver reuses the split and factors of the unchanged
+// stiffness (solved_systems.h), and a cascade its kept cascade solver (cascade_solver.h); the "cold"
+// variants make a new solver before every iteration (a graph seen for the first time). The cold cascade
 // on small 3D boxes shows the other end: dense blocks, few rounds. evaluate_wall and cascade_wall run
 // every stress model of the registries given to register_stress_benchmarks (benchmark_main.cpp); the
 // cold variants measure the rigid-body-spring solver's reuse and name its models.
 #include "algorithms/core/random.h"
 #include "benchmarks/benchmark_families.h"
 #include "algorithms/stress/propagation.h"
-#include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "fixtures/structures.h"
 
 #include <benchmark/benchmark.h>
@@ -66,14 +66,19 @@ void add_counters(benchmark::State& state, const SupportGraph& g, const SolverRe
   state.counters["converged"] = r.converged ? 1 : 0;
 }
 
-/// Whether every iteration starts without pooled analyses.
+/// Whether the iterations share one solver (warm) or each makes its own (cold).
 enum class Pool { warm, cold };
 
-void forget_if_cold(benchmark::State& state, Pool pool) {
-  if (pool == Pool::warm) return;
+/// The solver of the next iteration: `solver` again when warm, else a new one (made, and the old one
+/// destroyed, outside the timing).
+StressSolver& solver_for(benchmark::State& state, Pool pool, const StressModel& model, const SupportGraph& g,
+                         const Material& material, std::unique_ptr<StressSolver>& solver) {
+  if (pool == Pool::warm && solver) return *solver;
   state.PauseTiming();
-  forget_solver_reuse();
+  solver.reset();
+  solver = model.make_solver(g, material);
   state.ResumeTiming();
+  return *solver;
 }
 
 /// The built-in plugins, for the cold variants below (registered statically, by name).
@@ -94,13 +99,14 @@ void evaluate_wall(benchmark::State& state, const Registries& registries, const 
   Loads loads;
   loads.point_loads.push_back(PointLoad{});
   int step = 0;
+  std::unique_ptr<StressSolver> solver;
   for (auto _ : state) {
-    forget_if_cold(state, pool);
+    StressSolver& s = solver_for(state, pool, *model, g, Material{}, solver);
     PointLoad& p = loads.point_loads.front();  // 20 kN sideways and down, on the next block each time
     p.node = step++ % g.node_count();
     p.point = g.nodes[static_cast<std::size_t>(p.node)].centroid;
     p.force = Vec3(2e4, 0.0, -2e4);
-    Result<StressResult> r = model->evaluate(g, loads, Material{});
+    Result<StressResult> r = s.evaluate(loads);
     benchmark::DoNotOptimize(r);
     report = r->report;
   }
@@ -115,9 +121,10 @@ void run_cascade(benchmark::State& state, const Registries& registries, const st
   weak.tensile_strength = tensile_strength;
   SolverReport report;
   int rounds = 0;
+  std::unique_ptr<StressSolver> solver;
   for (auto _ : state) {
-    forget_if_cold(state, pool);
-    Result<PropagationResult> r = propagate(*model, g, Loads{}, weak, broken);
+    StressSolver& s = solver_for(state, pool, *model, g, weak, solver);
+    Result<PropagationResult> r = propagate(s, Loads{}, broken);
     benchmark::DoNotOptimize(r);
     report = r->report;
     rounds = r->rounds;

@@ -10,7 +10,6 @@
 #include <bit>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -398,52 +397,16 @@ std::optional<std::array<std::int32_t, 2>> find_intersection_between_parts(const
   return find_intersecting_pair(mesh, part.data());
 }
 
-namespace {
-
-/// The fingerprints of the last meshes found clean, oldest overwritten first.
-class CleanVerdicts {
- public:
-  bool contains(std::uint64_t fingerprint) {
-    const std::lock_guard lock(mutex_);
-    return std::find(seen_.begin(), seen_.begin() + count_, fingerprint) != seen_.begin() + count_;
-  }
-  void add(std::uint64_t fingerprint) {
-    const std::lock_guard lock(mutex_);
-    seen_[next_] = fingerprint;
-    next_ = (next_ + 1) % seen_.size();
-    count_ = std::min(count_ + 1, seen_.size());
-  }
-  void clear() {
-    const std::lock_guard lock(mutex_);
-    count_ = next_ = 0;
-  }
-
- private:
-  std::mutex mutex_;
-  std::array<std::uint64_t, kRememberedCleanMeshes> seen_{};
-  std::size_t count_ = 0;
-  std::size_t next_ = 0;
-};
-
-CleanVerdicts& clean_verdicts() {
-  static CleanVerdicts verdicts;
-  return verdicts;
-}
-
-}  // namespace
-
-Status check_no_self_intersection(const Mesh& mesh, std::string_view who) {
-  const std::uint64_t fingerprint = mesh_fingerprint(mesh);
-  if (clean_verdicts().contains(fingerprint)) return {};
+Status check_no_self_intersection(const Mesh& mesh, std::string_view who, SelfIntersectionVerdicts* verdicts) {
+  const std::uint64_t fingerprint = verdicts != nullptr ? mesh_fingerprint(mesh) : 0;
+  if (verdicts != nullptr && verdicts->remembers(fingerprint)) return {};
   const auto pair = find_self_intersection(mesh);
   if (!pair) {
-    clean_verdicts().add(fingerprint);
+    if (verdicts != nullptr) verdicts->remember(fingerprint);
     return {};
   }
   return Error{std::string(who) + ": the input mesh intersects itself (triangles " + std::to_string((*pair)[0]) +
                " and " + std::to_string((*pair)[1]) + ")"};
 }
-
-void forget_self_intersection_verdicts() { clean_verdicts().clear(); }
 
 }  // namespace shatter

@@ -15,6 +15,7 @@
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
+#include "algorithms/core/self_intersection_verdicts.h"
 
 #include <array>
 #include <cstddef>
@@ -42,18 +43,12 @@ std::optional<std::array<std::int32_t, 2>> find_self_intersection(const Mesh& me
 std::optional<std::array<std::int32_t, 2>> find_intersection_between_parts(const Mesh& mesh,
                                                                            std::span<const std::int32_t> part);
 
-/// How many clean verdicts check_no_self_intersection remembers.
-inline constexpr std::size_t kRememberedCleanMeshes = 64;
-
 /// Error "<who>: the input mesh intersects itself (triangles i and j)" when find_self_intersection
-/// finds a pair, else success. A clean verdict is remembered by the mesh's fingerprint
-/// (mesh_fingerprint.h) for the last kRememberedCleanMeshes clean meshes, and the same mesh is not
-/// tested again: the test costs about 0.3 us per triangle, more than a 5-fragment Voronoi fracture,
-/// while games and the grid break the same solid many times (every instance of an asset, every
-/// repetition of a cell). Thread-safe. A mesh that intersects itself is tested every time.
-Status check_no_self_intersection(const Mesh& mesh, std::string_view who);
-
-/// Forgets every remembered clean verdict (for benchmarks that time a solid's first fracture).
-void forget_self_intersection_verdicts();
+/// finds a pair, else success. With `verdicts`, a clean verdict is remembered there by the mesh's
+/// fingerprint (self_intersection_verdicts.h) and the same mesh is not tested again: the test costs
+/// about 0.3 us per triangle, more than a 5-fragment Voronoi fracture, while games and the grid break
+/// the same solid many times (every instance of an asset, every cell of a grid row). Without, every
+/// call tests. A mesh that intersects itself is tested every time.
+Status check_no_self_intersection(const Mesh& mesh, std::string_view who, SelfIntersectionVerdicts* verdicts);
 
 }  // namespace shatter

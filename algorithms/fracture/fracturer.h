@@ -19,6 +19,8 @@
 
 namespace shatter {
 
+class SelfIntersectionVerdicts;
+
 /// Where and how hard a fragment is hit.
 struct Impact {
   Vec3 point = Vec3::Zero();           ///< m, world
@@ -32,6 +34,9 @@ struct FractureParams {
   int fragments = 10;                  ///< requested number of fragments (>= 1)
   std::uint64_t seed = 1;              ///< random seed; same seed, same output
   std::optional<Impact> impact;        ///< where the piece is hit, when it is
+  /// Clean self-intersection verdicts the caller keeps between fractures (self_intersection_verdicts.h),
+  /// or none: every input check then runs. Changes no output, only what is tested again.
+  SelfIntersectionVerdicts* verdicts = nullptr;
 };
 
 /// A fracture algorithm. Implementations are stateless after construction and thread-compatible.

@@ -3,6 +3,7 @@
 #include "algorithms/bonds/graph_components.h"
 
 #include <algorithm>
+#include <memory>
 #include <numeric>
 #include <string>
 
@@ -14,9 +15,9 @@ void accumulate(SolverReport& total, const SolverReport& r) { add_solver_report(
 
 }  // namespace
 
-Result<PropagationResult> propagate(const StressModel& model, const SupportGraph& graph, const Loads& loads,
-                                    const Material& material, std::span<const int> initially_broken,
+Result<PropagationResult> propagate(StressSolver& solver, const Loads& loads, std::span<const int> initially_broken,
                                     const PropagationSettings& settings) {
+  const SupportGraph& graph = solver.graph();
   if (settings.max_rounds < 0) return Error{"propagation: max_rounds must be >= 0"};
   for (const int b : initially_broken)
     if (b < 0 || b >= graph.bond_count())
@@ -26,14 +27,14 @@ Result<PropagationResult> propagate(const StressModel& model, const SupportGraph
   PropagationResult out;
   Result<StressResult> current = Error{""};
   if (initially_broken.empty()) {
-    current = model.evaluate(graph, loads, material);
+    current = solver.evaluate(loads);
   } else {
     StressResult start;
     start.bonds.resize(graph.bonds.size());
     for (const int b : initially_broken) start.bonds[static_cast<std::size_t>(b)].broken = true;
     std::vector<int> all(graph.nodes.size());
     std::iota(all.begin(), all.end(), 0);
-    current = model.reevaluate(graph, loads, material, start, all);
+    current = solver.reevaluate(loads, start, all);
   }
   if (!current) return current.error();
   accumulate(out.report, current->report);
@@ -61,16 +62,22 @@ Result<PropagationResult> propagate(const StressModel& model, const SupportGraph
     }
     out.break_order.push_back(failing);
     ++out.rounds;
-    current = model.reevaluate(graph, loads, material, next, touched);
+    current = solver.reevaluate(loads, next, touched);
     if (!current) return current.error();
     accumulate(out.report, current->report);
   }
   out.result = std::move(current.value());
-  out.result.solver_state.reset();  // the model's reusable work ends with the cascade (it can be large)
   std::vector<std::uint8_t> broken(graph.bonds.size());
   for (std::size_t i = 0; i < broken.size(); ++i) broken[i] = out.result.bonds[i].broken ? 1 : 0;
   out.result.falling_clusters = falling_clusters(graph_components(graph, broken));
   return out;
+}
+
+Result<PropagationResult> propagate(const StressModel& model, const SupportGraph& graph, const Loads& loads,
+                                    const Material& material, std::span<const int> initially_broken,
+                                    const PropagationSettings& settings) {
+  const std::unique_ptr<StressSolver> solver = model.make_solver(graph, material);
+  return propagate(*solver, loads, initially_broken, settings);
 }
 
 }  // namespace shatter

@@ -33,9 +33,15 @@ struct PropagationResult {
   SolverReport report;                       ///< summed over every evaluation of the cascade
 };
 
-/// Evaluates `graph` with `model`, breaks failing bonds round by round until stable, and reports the
-/// falling clusters of the final state (union-find over the intact bonds). `initially_broken` bonds
-/// (e.g. destroyed by an impact) are removed before the first evaluation.
+/// Evaluates the structure of `solver`, breaks failing bonds round by round until stable, and reports
+/// the falling clusters of the final state (union-find over the intact bonds). `initially_broken`
+/// bonds (e.g. destroyed by an impact) are removed before the first evaluation. The solver keeps its
+/// work for the next cascade on the same structure (the next event); the result does not depend on
+/// what it solved before.
+Result<PropagationResult> propagate(StressSolver& solver, const Loads& loads, std::span<const int> initially_broken = {},
+                                    const PropagationSettings& settings = {});
+
+/// The same cascade with a solver of its own for `graph` and `material`, which ends with the call.
 Result<PropagationResult> propagate(const StressModel& model, const SupportGraph& graph, const Loads& loads,
                                     const Material& material, std::span<const int> initially_broken = {},
                                     const PropagationSettings& settings = {});

@@ -2,12 +2,16 @@
 /// The stress model interface: loads in, per-bond forces, stresses and utilization out, plus the
 /// clusters that have lost every path to an anchor.
 ///
-/// Design note: a model is stateless; the state of a cascade (which bonds are broken, the last
-/// displacements for a warm start, and whatever solver work the model reuses between rounds, e.g. a
-/// matrix ordering) lives in the StressResult, which `reevaluate` takes back. That keeps
-/// one model object usable from several pipelines and makes "only the affected component is re-solved"
-/// a property the caller can check: components with no touched node are copied from the previous
-/// result bit for bit.
+/// Design note: a model is stateless settings; the work worth keeping belongs to a StressSolver, made
+/// by the model for one structure (one support graph and material) and owned by its caller, as a
+/// stress solver is kept per structure in an engine: the pipeline keeps one per standing structure for
+/// a whole run, across every event, and a one-off evaluation makes its own. The solver keeps what
+/// depends only on the structure (for the rigid-body-spring models: the stiffness pattern, the block
+/// split, orderings, symbolic and numeric factors, the systems solved before); two solvers never
+/// share any of it. The state of one cascade (which bonds are broken, the last displacements for a
+/// warm start) lives in the StressResult, which `reevaluate` takes back, so "only the affected
+/// component is re-solved" is a property the caller can check: components with no touched node are
+/// copied from the previous result bit for bit.
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"
@@ -70,25 +74,33 @@ void add_solver_report(SolverReport& total, const SolverReport& r);
 /// converge (or "... gave non-finite forces or displacements"); empty when it did.
 std::string convergence_failure(const SolverReport& report);
 
-/// Work a model keeps between the evaluations of one cascade (e.g. the ordering and symbolic factor of
-/// the intact graph's stiffness). Opaque to callers; the model checks it fits the graph before use.
-class StressSolverState {
- public:
-  virtual ~StressSolverState() = default;
-};
-
 /// The outcome of one evaluation.
 struct StressResult {
   std::vector<BondStress> bonds;                  ///< #bonds, same order as SupportGraph::bonds
   std::vector<std::vector<int>> falling_clusters; ///< fragment indices of each component with no anchor
   std::vector<double> displacements;              ///< 6 #nodes: translation (m) and rotation (rad) per node
   SolverReport report;                            ///< solver statistics
-  /// The model's reusable solver work, handed on to the result of `reevaluate` (shared, not copied;
-  /// may be null). Results sharing it must not be re-evaluated concurrently.
-  std::shared_ptr<StressSolverState> solver_state;
 };
 
-/// A stress model. Implementations are stateless and thread-compatible.
+/// The stress solve of one structure: a support graph and a material, fixed for the solver's life.
+/// Made by StressModel::make_solver and owned by the caller; the graph must outlive it unchanged.
+/// Not thread-safe: one solve at a time. Every result is bit for bit what a new solver would give.
+class StressSolver {
+ public:
+  virtual ~StressSolver() = default;
+  /// The structure solved.
+  [[nodiscard]] virtual const SupportGraph& graph() const = 0;
+  /// Evaluates the intact graph. Errors for a bad material or bad loads.
+  [[nodiscard]] virtual Result<StressResult> evaluate(const Loads& loads) = 0;
+  /// Re-evaluates after bonds were flagged broken in `previous` (#bonds of graph()): components holding
+  /// any node of `touched` are solved again (warm-started from `previous.displacements`, when it holds
+  /// them), the others are copied. A `previous` without displacements (a fresh start) is solved as a
+  /// first evaluation is; one that holds them continues a cascade, reusing the work of its rounds.
+  [[nodiscard]] virtual Result<StressResult> reevaluate(const Loads& loads, const StressResult& previous,
+                                                        std::span<const int> touched) = 0;
+};
+
+/// A stress model. Implementations are stateless settings and thread-compatible.
 class StressModel {
  public:
   virtual ~StressModel() = default;
@@ -98,14 +110,15 @@ class StressModel {
   /// loads nothing breaks, and components without an anchor are never evaluated. The frame pipeline
   /// then skips the solve of a scene with no gravity or no anchors (result-neutral by this contract).
   [[nodiscard]] virtual bool driven_by_loads() const { return true; }
-  /// Evaluates the intact graph. Errors for a bad material or bad loads.
-  [[nodiscard]] virtual Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
-                                                      const Material& material) const = 0;
-  /// Re-evaluates after bonds were flagged broken in `previous`: components holding any node of
-  /// `touched` are solved again (warm-started from `previous.displacements`), the others are copied.
-  [[nodiscard]] virtual Result<StressResult> reevaluate(const SupportGraph& graph, const Loads& loads,
-                                                        const Material& material, const StressResult& previous,
-                                                        std::span<const int> touched) const = 0;
+  /// A solver for the structure `graph` (which must outlive it unchanged) made of `material`. A bad
+  /// material is reported by the solver's evaluations.
+  [[nodiscard]] virtual std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
+                                                                  const Material& material) const = 0;
+  /// Evaluates the intact `graph` once, with a solver of its own that ends with the call.
+  [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
+                                              const Material& material) const {
+    return make_solver(graph, material)->evaluate(loads);
+  }
 };
 
 

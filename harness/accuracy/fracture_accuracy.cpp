@@ -1,5 +1,6 @@
 #include "harness/accuracy/fracture_accuracy.h"
 
+#include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 #include "harness/accuracy/fracture_replay.h"
 #include "harness/metrics/fracture_acceptance.h"
@@ -24,7 +25,7 @@ struct Setting {
 };
 
 AccuracyPoint measure(const std::string& case_name, const Solid& solid, const std::optional<Impact>& impact,
-                      const Setting& s, const FractureAccuracyOptions& options) {
+                      const Setting& s, const FractureAccuracyOptions& options, SelfIntersectionVerdicts& verdicts) {
   AccuracyPoint p;
   p.family = "fracture";
   p.case_name = case_name;
@@ -45,6 +46,7 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
   params.fragments = s.fragments;
   params.seed = 1;
   params.impact = impact;
+  params.verdicts = &verdicts;
 
   std::vector<Fragment> fragments;
   for (int rep = 0; rep < options.repetitions; ++rep) {
@@ -119,6 +121,7 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
   const std::vector<std::string> names =
       options.fracturers.empty() ? default_accuracy_fracturers(registries) : options.fracturers;
   std::vector<AccuracyPoint> points;
+  SelfIntersectionVerdicts verdicts;  // the solid is checked once for every setting and repetition
   for (const std::string& name : names) {
     const auto knob = accuracy_knob(registries, name, options.sweeps);
     for (const int n : options.fragments) {
@@ -127,14 +130,14 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
           Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name, {{knob->first, value}});
           if (!f) return f.error();
           Setting s{std::move(*f), n, std::make_pair(knob->first, value)};
-          points.push_back(measure(case_name, solid, impact, s, options));
+          points.push_back(measure(case_name, solid, impact, s, options, verdicts));
         }
         continue;
       }
       Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name);
       if (!f) return f.error();
       Setting s{std::move(*f), n, std::nullopt};
-      points.push_back(measure(case_name, solid, impact, s, options));
+      points.push_back(measure(case_name, solid, impact, s, options, verdicts));
     }
   }
   return points;

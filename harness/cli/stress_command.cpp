@@ -93,7 +93,8 @@ int run_stress(const StressOptions& o, const Registries& registries) {
   if (!structure) return fail_input(structure.error().message);
   Loads loads;
   loads.gravity = c->gravity;
-  auto result = propagate(**model, structure->graph, loads, c->material, {});
+  const std::unique_ptr<StressSolver> solver = (*model)->make_solver(structure->graph, c->material);
+  auto result = propagate(*solver, loads);
   if (!result) return fail_input(c->name + ": " + result.error().message);
   // A solve that did not converge has no answer to print (its forces are not the structure's).
   if (!result->report.converged) return fail_check(c->name + ": " + convergence_failure(result->report));

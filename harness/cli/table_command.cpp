@@ -1,3 +1,4 @@
+#include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/limits.h"
 #include "algorithms/registry/registries.h"
@@ -50,6 +51,7 @@ int run_table(TableOptions o, const Registries& r) {
   }
 
   std::vector<std::string> failed;  // checks failed by rows, named by mesh, fracturer and count
+  SelfIntersectionVerdicts verdicts;  // each mesh's input check runs once for every row and repetition
   fmt::print("| mesh | triangles | fracturer | requested | fragments | median ms | x fastest | volume error "
              "| partition error | area error | closed | min volume |\n");
   fmt::print("|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---:|\n");
@@ -73,6 +75,7 @@ int run_table(TableOptions o, const Registries& r) {
           FractureParams params;
           params.fragments = n;
           params.seed = static_cast<std::uint64_t>(rep + 1);
+          params.verdicts = &verdicts;
           const auto t0 = std::chrono::steady_clock::now();
           auto fragments = fracturer->fracture(solid.mesh, params);
           const auto t1 = std::chrono::steady_clock::now();

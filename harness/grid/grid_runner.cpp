@@ -2,6 +2,7 @@
 
 #include "harness/results/cell_checks.h"
 
+#include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "harness/grid/calibration.h"
 #include "harness/grid/isolated_cell.h"
@@ -130,7 +131,7 @@ GridCell grid_cell_settings(const Case& c, const GridOptions& o, int p, int r) {
 }
 
 Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, const Registries& registries, int p,
-                               int r, int& done, int total) {
+                               int r, SelfIntersectionVerdicts* verdicts, int& done, int total) {
   const Case& c = prepared.spec;
   GridCell cell = grid_cell_settings(c, o, p, r);
   const RunSettings settings = grid_settings(c, o);
@@ -148,6 +149,7 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     run.frames = settings.frames;
     run.no_skip = o.no_skip;
     run.cache = o.cache;
+    run.verdicts = verdicts;
     run.partition_samples = o.partition_samples;
     run.schedule = settings.schedule;
     instruction_marks::set_run(p, r, rep);
@@ -192,6 +194,8 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
     cells_here += static_cast<int>(i % static_cast<std::size_t>(o.shard_count)) == o.shard_index ? 1 : 0;
   const int total = cells_here * o.repetitions;
   int done = 0;
+  // The cells of a row break the same pre-fracture: its fragments are checked once for the whole grid.
+  SelfIntersectionVerdicts verdicts;
   std::size_t cell_index = 0;
   for (const int p : prefracture) {
     for (const int r : runtime) {
@@ -200,12 +204,12 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
       if (o.cell_timeout_s > 0.0) {
         // The child runs and times the cell; its progress calls count on from `done` in its own copy.
         const int before = done;
-        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, registries, p, r, done, total); },
+        cell = run_cell_isolated([&] { return run_grid_cell(prepared, o, registries, p, r, &verdicts, done, total); },
                                  grid_cell_settings(c, o, p, r), o.cell_timeout_s, o.latency_budget_ms);
         done = before + o.repetitions;
         if (o.progress) o.progress(done, total);
       } else {
-        cell = run_grid_cell(prepared, o, registries, p, r, done, total);
+        cell = run_grid_cell(prepared, o, registries, p, r, &verdicts, done, total);
       }
       if (!cell) return cell.error();
       out.cells.push_back(std::move(*cell));

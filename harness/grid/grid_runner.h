@@ -65,10 +65,11 @@ Status check_grid_options(const Case& c, const GridOptions& options, const Regis
 /// that failed reports.
 GridCell grid_cell_settings(const Case& c, const GridOptions& options, int p, int r);
 
-/// Runs one cell of the grid, every repetition in this process. `done` counts the runs finished (for
-/// `options.progress`, out of `total`).
+/// Runs one cell of the grid, every repetition in this process, passing `verdicts` (clean
+/// self-intersection verdicts the grid shares between its cells, or none) to every run. `done` counts
+/// the runs finished (for `options.progress`, out of `total`).
 Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& options, const Registries& registries,
-                               int p, int r, int& done, int total);
+                               int p, int r, SelfIntersectionVerdicts* verdicts, int& done, int total);
 
 /// Runs the grid of `prepared` (options checked by check_grid_options).
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options, const Registries& registries);

@@ -68,6 +68,9 @@ struct RunOptions {
   int frames = 0;                     ///< frames to run (0: the case's); an impact after the last frame lands in it
   bool no_skip = false;               ///< turn every automatic skip off (see the file comment)
   const PrefractureCache* cache = nullptr;  ///< pre-fracture cache, or none
+  /// Clean self-intersection verdicts shared with other runs (a grid passes one to all its cells), or
+  /// none. Changes no result, only which input checks run again.
+  SelfIntersectionVerdicts* verdicts = nullptr;
   int partition_samples = 256;        ///< points of the partition-error test (untimed; 0 skips it)
   std::optional<ScheduleMode> schedule;  ///< schedule mode (none: the case's schedule.mode)
 };

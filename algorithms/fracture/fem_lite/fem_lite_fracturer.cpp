@@ -18,7 +18,7 @@ Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const Fract
   if (Status s = check_fracture_params(solid, params, "fem-lite"); !s) return s.error();
   if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
   // A surface that crosses itself makes cut outlines that cross: no valid partition, as for voronoi.
-  if (Status s = check_no_self_intersection(solid, "fem-lite"); !s) return s.error();
+  if (Status s = check_no_self_intersection(solid, "fem-lite", params.verdicts); !s) return s.error();
   FemLiteAnalysis analysis;
   if (params.fragments <= 1) {
     analysis.fragments = 1;

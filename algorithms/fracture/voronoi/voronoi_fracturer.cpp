@@ -241,7 +241,7 @@ Status check_settings(const VoronoiSettings& s) {
 Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
   if (Status s = check_fracture_params(solid, params, "voronoi"); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
-  if (Status s = check_no_self_intersection(solid, "voronoi"); !s) return s.error();
+  if (Status s = check_no_self_intersection(solid, "voronoi", params.verdicts); !s) return s.error();
   if (solid.empty()) return std::vector<Fragment>{};
   const PointInMesh inside(solid);
   Result<std::vector<Vec3>> sites = sample_sites(inside, params, settings_.sites);
@@ -255,7 +255,7 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& 
   if (Status s = check_fracture_solid(solid, "voronoi"); !s) return s.error();
   if (Status s = check_sites(sites); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
-  if (Status s = check_no_self_intersection(solid, "voronoi"); !s) return s.error();
+  if (Status s = check_no_self_intersection(solid, "voronoi", nullptr); !s) return s.error();
   if (solid.empty()) return std::vector<Fragment>{};
   return cut_cells(solid, sites, nullptr);
 }

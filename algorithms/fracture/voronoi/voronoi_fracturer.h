@@ -36,7 +36,7 @@ class VoronoiFracturer final : public Fracturer {
   /// Cuts `solid` into the Voronoi cells of the given sites (#S distinct finite points, m; sites
   /// outside the solid are allowed, their cells may miss it). Fragments come in site order, the parts
   /// of one cell in connected_components order; cells that miss the solid give none. A solid whose
-  /// surface intersects itself is an error.
+  /// surface intersects itself is an error (tested on every call: no verdicts are remembered).
   [[nodiscard]] Result<std::vector<Fragment>> fracture_with_sites(const Mesh& solid,
                                                                   std::span<const Vec3> sites) const;
 

@@ -2,34 +2,29 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 namespace shatter {
+namespace {
 
-Result<StressResult> ConnectionCountModel::evaluate(const SupportGraph& graph, const Loads& loads,
-                                                    const Material& material) const {
-  StressResult fresh;
-  fresh.bonds.resize(graph.bonds.size());
-  return reevaluate(graph, loads, material, fresh, {});
-}
-
-Result<StressResult> ConnectionCountModel::reevaluate(const SupportGraph& graph, const Loads& loads,
-                                                      const Material& material, const StressResult& previous,
-                                                      std::span<const int> /*touched*/) const {
+/// The count rule's verdict on every bond of `graph`, with the bonds of `previous` flagged broken.
+Result<StressResult> count_verdicts(const SupportGraph& graph, const Loads& loads, const Material& material,
+                                    const ConnectionCountSettings& settings, const StressResult& previous) {
   if (Status s = check_material(material); !s) return s.error();
   if (Status s = check_loads(loads, graph); !s) return s.error();
-  if (!(settings_.min_support_fraction >= 0.0 && settings_.min_support_fraction <= 1.0) ||
-      settings_.min_connections < 0)
+  if (!(settings.min_support_fraction >= 0.0 && settings.min_support_fraction <= 1.0) ||
+      settings.min_connections < 0)
     return Error{"connection-count: min_support_fraction must be in [0, 1] and min_connections >= 0"};
   assert(previous.bonds.size() == graph.bonds.size());
 
   // Original counts from every bonded pair; intact counts from the pairs with an unbroken bond.
-  ConnectionGraph original = ConnectionGraph::from_support_graph(graph, settings_);
+  ConnectionGraph original = ConnectionGraph::from_support_graph(graph, settings);
   SupportGraph intact_graph;
   intact_graph.nodes = graph.nodes;
   for (std::size_t i = 0; i < graph.bonds.size(); ++i)
     if (!previous.bonds[i].broken) intact_graph.bonds.push_back(graph.bonds[i]);
-  const ConnectionGraph intact = ConnectionGraph::from_support_graph(intact_graph, settings_);
+  const ConnectionGraph intact = ConnectionGraph::from_support_graph(intact_graph, settings);
 
   StressResult out;
   out.bonds.resize(graph.bonds.size());
@@ -55,6 +50,36 @@ Result<StressResult> ConnectionCountModel::reevaluate(const SupportGraph& graph,
     if (!rooted) out.falling_clusters.push_back(std::move(cluster));
   }
   return out;
+}
+
+/// The count rule on one structure; it keeps nothing between evaluations.
+class ConnectionCountSolver final : public StressSolver {
+ public:
+  ConnectionCountSolver(const SupportGraph& graph, const Material& material, const ConnectionCountSettings& settings)
+      : graph_(graph), material_(material), settings_(settings) {}
+
+  [[nodiscard]] const SupportGraph& graph() const override { return graph_; }
+  [[nodiscard]] Result<StressResult> evaluate(const Loads& loads) override {
+    StressResult fresh;
+    fresh.bonds.resize(graph_.bonds.size());
+    return count_verdicts(graph_, loads, material_, settings_, fresh);
+  }
+  [[nodiscard]] Result<StressResult> reevaluate(const Loads& loads, const StressResult& previous,
+                                                std::span<const int> /*touched*/) override {
+    return count_verdicts(graph_, loads, material_, settings_, previous);
+  }
+
+ private:
+  const SupportGraph& graph_;
+  Material material_;
+  ConnectionCountSettings settings_;
+};
+
+}  // namespace
+
+std::unique_ptr<StressSolver> ConnectionCountModel::make_solver(const SupportGraph& graph,
+                                                                const Material& material) const {
+  return std::make_unique<ConnectionCountSolver>(graph, material, settings_);
 }
 
 void register_connection_count(StressModelRegistry& registry) {

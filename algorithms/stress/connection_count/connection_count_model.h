@@ -22,12 +22,10 @@ class ConnectionCountModel final : public StressModel {
   [[nodiscard]] std::string_view name() const override { return "connection-count"; }
   /// The count rule ignores loads and judges unanchored pieces too.
   [[nodiscard]] bool driven_by_loads() const override { return false; }
-  [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
-                                              const Material& material) const override;
-  /// Counts are cheap: the whole graph is re-checked whatever `touched` holds.
-  [[nodiscard]] Result<StressResult> reevaluate(const SupportGraph& graph, const Loads& loads,
-                                                const Material& material, const StressResult& previous,
-                                                std::span<const int> touched) const override;
+  /// A solver that keeps nothing: counts are cheap, and every evaluation re-checks the whole graph
+  /// whatever `touched` holds.
+  [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
+                                                          const Material& material) const override;
 
  private:
   ConnectionCountSettings settings_;

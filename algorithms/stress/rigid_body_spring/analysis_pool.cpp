@@ -1,7 +1,5 @@
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 
-#include "algorithms/stress/rigid_body_spring/bounded_store.h"
-
 #include <algorithm>
 #include <utility>
 
@@ -14,17 +12,6 @@ std::uint64_t mix(std::uint64_t h, const std::vector<int>& values) {
   return (h ^ values.size()) * 1099511628211ull;
 }
 
-struct Entry {
-  FactorPattern pattern;
-  SparseCholesky factor;
-  std::size_t bytes = 0;
-};
-
-BoundedStore<Entry>& pool() {
-  thread_local BoundedStore<Entry> p(kMaxPooledFactors, kMaxPooledBytes);
-  return p;
-}
-
 }  // namespace
 
 FactorPattern::FactorPattern(const Eigen::SparseMatrix<double>& lower, std::span<const int> node_groups)
@@ -34,8 +21,8 @@ FactorPattern::FactorPattern(const Eigen::SparseMatrix<double>& lower, std::span
   hash = mix(mix(mix(14695981039346656037ull, outer), inner), groups);
 }
 
-std::optional<SparseCholesky> take_analysed(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower) {
-  BoundedStore<Entry>& p = pool();
+std::optional<SparseCholesky> AnalysisPool::take(const FactorPattern& pattern, const Eigen::SparseMatrix<double>& lower) {
+  BoundedStore<Entry>& p = store_;
   if (std::optional<Entry> found =
           p.take([&](const Entry& e) { return e.pattern.hash == pattern.hash && e.pattern == pattern; })) {
     ++p.reuses;
@@ -46,13 +33,9 @@ std::optional<SparseCholesky> take_analysed(const FactorPattern& pattern, const 
   return factor;
 }
 
-void keep_analysed(FactorPattern pattern, SparseCholesky factor) {
+void AnalysisPool::keep(FactorPattern pattern, SparseCholesky factor) {
   const std::size_t bytes = factor.factor_bytes() + sizeof(int) * (pattern.outer.size() + pattern.inner.size() + pattern.groups.size());
-  pool().keep(Entry{std::move(pattern), std::move(factor), bytes}, [](Entry&) {});
+  store_.keep(Entry{std::move(pattern), std::move(factor), bytes}, [](Entry&) {});
 }
-
-void forget_analysed() { pool().clear(); }
-
-std::size_t analysed_reuses() { return pool().reuses; }
 
 }  // namespace shatter

@@ -1,6 +1,6 @@
 #pragma once
 /// A small store of entries kept between solves, oldest first, bounded in count and in bytes; the
-/// analysis pool (analysis_pool.h) and the solved systems (linear_solve.cpp) each keep one per thread.
+/// analysis pool (analysis_pool.h) and the solved systems (solved_systems.h) of a solver each keep one.
 
 #include <algorithm>
 #include <cstddef>
@@ -42,11 +42,6 @@ class BoundedStore {
     }
     bytes_ += entry.bytes;
     entries_.push_back(std::move(entry));
-  }
-
-  void clear() {
-    entries_.clear();
-    bytes_ = 0;
   }
 
   std::size_t reuses = 0;  ///< entries handed out again (counted by the owner)

@@ -1,6 +1,5 @@
 #include "algorithms/stress/rigid_body_spring/cascade_solver.h"
 
-#include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/sparse_product.h"
 
@@ -23,14 +22,8 @@ Vector gather(const Vector& x, const std::vector<int>& unknowns) {
 
 }  // namespace
 
-CascadeSolver::CascadeSolver(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings)
-    : graph_(&graph),
-      node_count_(graph.node_count()),
-      bond_count_(graph.bond_count()),
-      young_modulus_(material.young_modulus),
-      shear_modulus_(material.shear_modulus()),
-      material_(material),
-      settings_(settings) {}
+CascadeSolver::CascadeSolver(const Material& material, const SpringSolverSettings& settings, AnalysisPool& pool)
+    : material_(material), settings_(settings), pool_(pool) {}
 
 void CascadeSolver::build(const SupportGraph& graph) {
   stiffness_.emplace(graph, material_);
@@ -96,16 +89,7 @@ void CascadeSolver::build(const SupportGraph& graph) {
 CascadeSolver::~CascadeSolver() {
   for (Block& block : blocks_)
     if (block.cholesky && !block.failed)
-      keep_analysed(FactorPattern(block.lower, node_groups(block.unknowns)), std::move(*block.cholesky));
-}
-
-bool CascadeSolver::fits(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings) const {
-  return graph_ == &graph && node_count_ == graph.node_count() && bond_count_ == graph.bond_count() &&
-         young_modulus_ == material.young_modulus && shear_modulus_ == material.shear_modulus() &&
-         settings_.decoupling_tolerance == settings.decoupling_tolerance &&
-         settings_.direct_max_flops == settings.direct_max_flops &&
-         settings_.refinement_steps == settings.refinement_steps &&
-         settings_.refinement_gain == settings.refinement_gain && !settings.reference;
+      pool_.keep(FactorPattern(block.lower, node_groups(block.unknowns)), std::move(*block.cholesky));
 }
 
 bool CascadeSolver::couplings_negligible() {
@@ -134,7 +118,7 @@ bool CascadeSolver::factorize(Block& block) {
   if (block.factorised) return true;
   if (!block.analysed) {
     block.analysed = true;
-    block.cholesky = take_analysed(FactorPattern(block.lower, node_groups(block.unknowns)), block.lower);
+    block.cholesky = pool_.take(FactorPattern(block.lower, node_groups(block.unknowns)), block.lower);
     block.direct = block.cholesky && block.cholesky->factor_flops() <= settings_.direct_max_flops;
   }
   if (!block.direct) return false;
@@ -150,7 +134,6 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
                                                  std::span<const std::uint8_t> broken, std::span<const std::uint8_t> solve_now,
                                                  std::span<const double> loads, std::vector<double>& displacements,
                                                  std::vector<BondForces>& forces) {
-  const std::lock_guard<std::mutex> lock(mutex_);
   if (!stiffness_) build(graph);
   for (const Block& block : blocks_)
     if (block.analysed && !block.direct) return std::nullopt;  // a CG block: the per-component path

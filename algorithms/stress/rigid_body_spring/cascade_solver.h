@@ -6,9 +6,10 @@
 /// identity rows for the nodes of falling clusters, graph_stiffness.h) serves every round. The split
 /// into decoupled blocks (decoupled_blocks.h), each block's lower-triangle pattern with its gather map
 /// from K, and each block's AMD ordering and symbolic analysis (sparse_cholesky.h) are therefore done once; a round
-/// costs an assembly by scatter, a gather per block and a numeric factorisation. The analyses go back
-/// to the thread's analysis pool when the solver ends, so the next cascade on the same graph starts
-/// with them (the pattern is the intact graph's whatever broke). The anchored
+/// costs an assembly by scatter, a gather per block and a numeric factorisation. It is kept for the
+/// life of its structure's solver (StrengthCriterionSolver), so every cascade on the structure (every
+/// event of a run) starts with all of it; what it reuses gives bit for bit what a new one would (the
+/// assembly and the node-block refactorisation recompute exactly what changed). The anchored
 /// components share the system but not a single entry, so each one's solution is its own solve's,
 /// and the residual is reported per component, as for a solve of the component alone. The path steps
 /// aside (the caller solves per component) when it does not apply: a block above the flop limit of
@@ -16,31 +17,29 @@
 /// that has grown above the decoupling tolerance once bonds broke.
 
 #include "algorithms/bonds/graph_components.h"
+#include "algorithms/stress/rigid_body_spring/analysis_pool.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
 #include "algorithms/stress/stress_model.h"
 
 #include <cstdint>
-#include <mutex>
 #include <optional>
 #include <span>
 #include <vector>
 
 namespace shatter {
 
-class CascadeSolver final : public StressSolverState {
+class CascadeSolver final {
  public:
-  /// A solver for `graph` and `material`; the intact pattern, springs and block split are built by the
+  /// A solver for one graph (the one every `solve` passes) made of `material`, taking its analyses
+  /// from `pool` (which must outlive it); the intact pattern, springs and block split are built by the
   /// first solve (a cascade's first round goes per component and may be its only one).
-  CascadeSolver(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings);
-  /// Returns the blocks' analysed factors to this thread's analysis pool.
-  ~CascadeSolver() override;
+  CascadeSolver(const Material& material, const SpringSolverSettings& settings, AnalysisPool& pool);
+  /// Returns the blocks' analysed factors to the pool.
+  ~CascadeSolver();
   CascadeSolver(const CascadeSolver&) = delete;
   CascadeSolver& operator=(const CascadeSolver&) = delete;
-
-  /// True when built for this graph object (same sizes) and the same stiffness constants and settings.
-  [[nodiscard]] bool fits(const SupportGraph& graph, const Material& material, const SpringSolverSettings& settings) const;
 
   /// Solves the anchored components with `solve_now[c] != 0` (#components of `components`, computed with
   /// `broken`, #bonds) under `loads` (6 #nodes): their nodes' `displacements` (6 #nodes) and their
@@ -59,7 +58,7 @@ class CascadeSolver final : public StressSolverState {
     std::vector<int> unknowns;             // ascending
     Eigen::SparseMatrix<double> lower;     // fixed pattern, values gathered from K
     std::vector<int> source;               // #entries of lower: index in K's value array
-    std::optional<SparseCholesky> cholesky;  // from the analysis pool (analysis_pool.h)
+    std::optional<SparseCholesky> cholesky;  // from the analysis pool (analysis_pool.h), then kept
     bool failed = false;                   // a factorisation failed: the factor is not pooled again
     bool analysed = false;                 // ordering and symbolic factor done
     bool direct = false;                   // analysed and within direct_max_flops
@@ -77,17 +76,14 @@ class CascadeSolver final : public StressSolverState {
   [[nodiscard]] bool couplings_negligible();
   bool factorize(Block& block);
 
-  const SupportGraph* graph_;
-  int node_count_, bond_count_;
-  double young_modulus_, shear_modulus_;
   Material material_;
   SpringSolverSettings settings_;
+  AnalysisPool& pool_;
   std::optional<GraphStiffness> stiffness_;  // built by the first solve
   std::vector<Block> blocks_;
   std::vector<Coupling> couplings_;
   std::vector<int> node_coupling_start_, node_couplings_;  // per free node: couplings in its columns or rows
   bool couplings_known_negligible_ = false;                // every coupling passed the last check
-  std::mutex mutex_;
 };
 
 }  // namespace shatter

@@ -2,9 +2,11 @@
 /// The linear solve K u = f of one anchored component: split into decoupled blocks, each block solved
 /// by sparse Cholesky (sparse_cholesky.h: node blocks, or CHOLMOD's supernodes for large factors) when
 /// its factorisation is cheap enough, else by Jacobi-preconditioned CG.
-/// The split and the factors of the last few K solved on a thread are kept: the same K under other
-/// loads (a structure evaluated again) only pays the triangular solves.
+/// The split and the factors of the last few K a solver solved are kept in its memory
+/// (solved_systems.h): the same K under other loads (a structure evaluated again) only pays the
+/// triangular solves.
 
+#include "algorithms/stress/rigid_body_spring/solved_systems.h"
 #include "algorithms/stress/stress_model.h"
 
 #include <Eigen/SparseCore>
@@ -35,11 +37,12 @@ double solve_tolerance(const SpringSolverSettings& settings);
 
 /// Solves `k` u = `f` (k: both triangles, SPD, compressed). `u` holds the warm start (used by CG;
 /// non-finite entries are replaced by zero) and receives the solution. The report carries the residual
-/// |f - k u| / |f| against the full `k`, iterations, and convergence. `k` is taken over: it is kept with
-/// its split and factors for the next solve of the same K, swapped in without a copy (so the caller's
-/// matrix is left empty, or unspecified when the reference path or the size bound keeps nothing).
+/// |f - k u| / |f| against the full `k`, iterations, and convergence. `k` is taken over: it is kept in
+/// `memory` with its split and factors for the next solve of the same K, swapped in without a copy (so
+/// the caller's matrix is left empty, or unspecified when the reference path or the size bound keeps
+/// nothing); its analyses come from `memory` when a pattern was seen before.
 SolverReport solve_linear(Eigen::SparseMatrix<double>&& k, const Eigen::VectorXd& f, Eigen::VectorXd& u,
-                          const SpringSolverSettings& settings);
+                          const SpringSolverSettings& settings, SolverMemory& memory);
 
 /// Whether another refinement step is worth its solve: the residual norm went from `last` (before the
 /// previous step; infinite before the first) to `now`. Refinement in working precision cuts the residual
@@ -47,12 +50,5 @@ SolverReport solve_linear(Eigen::SparseMatrix<double>&& k, const Eigen::VectorXd
 /// than 2 (the benchmark walls: the first step gains 1.4x to 3x, the second nothing, docs/stress.md
 /// section 3), so a step that gained less than `refinement_gain` ends the refinement.
 bool refinement_pays(double last, double now, const SpringSolverSettings& settings);
-
-/// Empties this thread's solved systems (a K solved again reuses its split and factors) and its
-/// analysis pool (analysis_pool.h): the next solves start cold (benchmarks of first solves, tests).
-void forget_solver_reuse();
-
-/// Solves on this thread so far that found their K already solved (tests).
-std::size_t solved_system_reuses();
 
 }  // namespace shatter

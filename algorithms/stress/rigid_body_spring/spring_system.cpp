@@ -38,8 +38,8 @@ std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, co
 
 SolverReport solve_component(const SupportGraph& graph, std::span<const int> nodes, std::span<const int> bonds,
                              std::span<const double> loads, const Material& material,
-                             const SpringSolverSettings& settings, std::vector<double>& displacements,
-                             std::vector<BondForces>& forces) {
+                             const SpringSolverSettings& settings, SolverMemory& memory,
+                             std::vector<double>& displacements, std::vector<BondForces>& forces) {
   // Local numbering of the free (not anchored) nodes; anchored ones keep -1.
   std::vector<int> local(graph.nodes.size(), -1);
   std::vector<int> free_nodes;
@@ -82,7 +82,7 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
       u[6 * i + k] = displacements[g];
     }
   if (n > 0 && f.squaredNorm() > 0.0) {
-    report = solve_linear(std::move(stiffness), f, u, settings);
+    report = solve_linear(std::move(stiffness), f, u, settings, memory);
     report.solves = 1;
     report.unknowns = n;
   } else {

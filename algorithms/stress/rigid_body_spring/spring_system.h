@@ -29,10 +29,11 @@ std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, co
 
 /// Solves the component made of `nodes` (with at least one anchored) and its intact `bonds`.
 /// `displacements` (6 #nodes, global) is read as the warm start of the component's nodes and
-/// overwritten with the solution; `forces` (#bonds, global) receives the forces of `bonds`.
+/// overwritten with the solution; `forces` (#bonds, global) receives the forces of `bonds`. The solve
+/// reuses and keeps its work in `memory` (linear_solve.h).
 SolverReport solve_component(const SupportGraph& graph, std::span<const int> nodes, std::span<const int> bonds,
                              std::span<const double> loads, const Material& material,
-                             const SpringSolverSettings& settings, std::vector<double>& displacements,
-                             std::vector<BondForces>& forces);
+                             const SpringSolverSettings& settings, SolverMemory& memory,
+                             std::vector<double>& displacements, std::vector<BondForces>& forces);
 
 }  // namespace shatter

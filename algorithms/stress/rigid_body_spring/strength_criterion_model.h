@@ -1,7 +1,8 @@
 #pragma once
 /// "tresca" and "von-mises": the rigid-body-spring static solve (spring_system.h) with a strength
 /// criterion on every bond (strength_criterion.h). Components with no anchor are falling clusters and
-/// are never solved (their stiffness matrix is singular); their bonds report zero stress.
+/// are never solved (their stiffness matrix is singular); their bonds report zero stress. The model is
+/// settings; the work of the solves lives in the solver it makes per structure.
 
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/strength_criterion.h"
@@ -20,11 +21,9 @@ class StrengthCriterionModel final : public StressModel {
   [[nodiscard]] std::string_view name() const override {
     return criterion_ == Criterion::tresca ? "tresca" : "von-mises";
   }
-  [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
-                                              const Material& material) const override;
-  [[nodiscard]] Result<StressResult> reevaluate(const SupportGraph& graph, const Loads& loads,
-                                                const Material& material, const StressResult& previous,
-                                                std::span<const int> touched) const override;
+  /// A StrengthCriterionSolver (strength_criterion_solver.h) for `graph` and `material`.
+  [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
+                                                          const Material& material) const override;
 
  private:
   Criterion criterion_;

@@ -1,9 +1,9 @@
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
+#include "algorithms/stress/rigid_body_spring/inline_parallel_regions.h"
 #include "algorithms/stress/rigid_body_spring/node_ordering.h"
 
 #include <cholmod.h>
-#include <dlfcn.h>
 #include <omp.h>
 
 #include <cassert>
@@ -57,24 +57,22 @@ cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& lower) {
   return a;
 }
 
-/// Set while this thread is inside CHOLMOD under SingleThreaded: its OpenMP regions then run inline.
-thread_local bool run_regions_inline = false;
-
 /// Runs CHOLMOD single-threaded while alive. Debian's CHOLMOD opens OpenMP teams of 4 threads for
 /// large supernodes; on 2 shared cores the wake-ups cost more than they gain (evaluating the 23 x 22
 /// wall: 6.0 ms with them, 4.2 ms without; the 71 x 71 wall: 156 ms against 82 ms). The bound is a
 /// process-wide OpenMP setting, restored on exit; nothing else in shatterbench uses OpenMP. Even a team
 /// of one costs a team set-up and a futex wake-up per region, and CHOLMOD opens regions per supernode
-/// (~2,000 per factorisation of the 23 x 22 wall's in-plane half), so the regions of this thread are
-/// also run as plain calls (GOMP_parallel below).
+/// (~2,000 per factorisation of the 23 x 22 wall's in-plane half), so the guard also asks for the
+/// regions of this thread to run as plain calls (inline_parallel_regions.h; honoured when built with
+/// SHATTER_INLINE_PARALLEL_REGIONS, the default).
 class SingleThreaded {
  public:
-  SingleThreaded() : saved_(omp_get_max_active_levels()), saved_inline_(run_regions_inline) {
+  SingleThreaded() : saved_(omp_get_max_active_levels()), saved_inline_(run_parallel_regions_inline) {
     omp_set_max_active_levels(0);
-    run_regions_inline = true;
+    run_parallel_regions_inline = true;
   }
   ~SingleThreaded() {
-    run_regions_inline = saved_inline_;
+    run_parallel_regions_inline = saved_inline_;
     omp_set_max_active_levels(saved_);
   }
   SingleThreaded(const SingleThreaded&) = delete;
@@ -159,32 +157,3 @@ Eigen::VectorXd SupernodalCholesky::solve(const Eigen::VectorXd& b) const {
 }
 
 }  // namespace shatter
-
-/// libgomp's entry point of `#pragma omp parallel` (GCC 4.9 and later), defined here so that it takes
-/// precedence over libgomp's for CHOLMOD's calls. Under SingleThreaded the region body runs as a plain
-/// call on this thread: the same code a team of one runs (omp_get_num_threads() is 1 and
-/// omp_get_thread_num() 0 outside a team, worksharing and barriers outside a team are valid and act on
-/// this thread alone), without libgomp's team set-up and the futex wake-up at its closing barrier.
-/// Everywhere else it forwards to libgomp's. Evaluating the 23 x 22 wall: 2.97 ms before, 2.24 ms with
-/// it (docs/stress.md, section 4).
-extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_threads, unsigned flags) {
-  if (shatter::run_regions_inline) {
-    fn(data);
-    return;
-  }
-  using Entry = void (*)(void (*)(void*), void*, unsigned, unsigned);
-  static const Entry libgomp = reinterpret_cast<Entry>(dlsym(RTLD_NEXT, "GOMP_parallel"));
-  libgomp(fn, data, num_threads, flags);
-}
-
-/// SuiteSparse's wall clock, which CHOLMOD 3.0.14 reads around every BLAS call of a supernodal
-/// factorisation and solve for timing statistics (`cholmod_common` fields shatterbench never reads;
-/// no setting turns them off). Under SingleThreaded it returns 0 without reading the clock: the
-/// statistics are then 0, nothing else changes. Evaluating the 23 x 22 wall spent about 6 % of its
-/// time in these clock reads (docs/stress.md, section 4). Everywhere else it forwards to SuiteSparse's.
-extern "C" double SuiteSparse_time(void) {
-  if (shatter::run_regions_inline) return 0.0;
-  using Entry = double (*)(void);
-  static const Entry suitesparse = reinterpret_cast<Entry>(dlsym(RTLD_NEXT, "SuiteSparse_time"));
-  return suitesparse();
-}

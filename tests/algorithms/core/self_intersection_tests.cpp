@@ -4,6 +4,7 @@
 // meshes that CGAL reports as self-intersecting.
 
 #include "algorithms/core/primitives.h"
+#include "algorithms/core/mesh_fingerprint.h"
 #include "algorithms/core/random.h"
 #include "algorithms/core/self_intersection.h"
 #include "tests/support/mesh_fixtures.h"
@@ -197,15 +198,38 @@ TEST_CASE("self-intersection: local folds, found among neighbours as testing eve
 }
 
 TEST_CASE("self-intersection: a remembered clean verdict never hides a changed mesh", "[self-intersection]") {
-  forget_self_intersection_verdicts();
+  SelfIntersectionVerdicts verdicts;
   Mesh mesh = merged(make_box(Vec3(1, 1, 1)), make_box(Vec3(1, 1, 1), Vec3(3, 0, 0)));
-  CHECK(check_no_self_intersection(mesh, "test"));
-  CHECK(check_no_self_intersection(mesh, "test"));  // remembered
+  CHECK(check_no_self_intersection(mesh, "test", &verdicts));
+  CHECK(verdicts.remembers(mesh_fingerprint(mesh)));
+  CHECK(check_no_self_intersection(mesh, "test", &verdicts));  // remembered
   // Move the second box into the first: same counts, same triangles, one vertex array changed.
   for (std::size_t v = mesh.vertices.size() / 2; v < mesh.vertices.size(); ++v) mesh.vertices[v].x() -= 2.5;
-  const Status moved = check_no_self_intersection(mesh, "test");
+  const Status moved = check_no_self_intersection(mesh, "test", &verdicts);
   REQUIRE_FALSE(moved);
   CHECK_THAT(moved.error().message, Catch::StartsWith("test: the input mesh intersects itself"));
   // And refused again: a mesh that intersects itself is never remembered.
-  CHECK_FALSE(check_no_self_intersection(mesh, "test"));
+  CHECK_FALSE(verdicts.remembers(mesh_fingerprint(mesh)));
+  CHECK_FALSE(check_no_self_intersection(mesh, "test", &verdicts));
+  CHECK_FALSE(check_no_self_intersection(mesh, "test", nullptr));
+}
+
+TEST_CASE("self-intersection: two verdict memories never see each other's verdicts", "[self-intersection]") {
+  const Mesh mesh = merged(make_box(Vec3(1, 1, 1)), make_box(Vec3(1, 1, 1), Vec3(3, 0, 0)));
+  SelfIntersectionVerdicts one, two;
+  CHECK(check_no_self_intersection(mesh, "test", &one));
+  CHECK(one.remembers(mesh_fingerprint(mesh)));
+  CHECK_FALSE(two.remembers(mesh_fingerprint(mesh)));  // found clean through `one` only
+  CHECK(check_no_self_intersection(mesh, "test", nullptr));  // no memory: tested, nothing remembered
+  CHECK_FALSE(two.remembers(mesh_fingerprint(mesh)));
+}
+
+TEST_CASE("self-intersection: a verdict memory keeps the last kRememberedCleanMeshes meshes", "[self-intersection]") {
+  SelfIntersectionVerdicts verdicts;
+  for (std::uint64_t f = 1; f <= kRememberedCleanMeshes; ++f) verdicts.remember(f);
+  CHECK(verdicts.remembers(1));
+  verdicts.remember(kRememberedCleanMeshes + 1);  // one more than fits: the oldest goes
+  CHECK_FALSE(verdicts.remembers(1));
+  CHECK(verdicts.remembers(2));
+  CHECK(verdicts.remembers(kRememberedCleanMeshes + 1));
 }

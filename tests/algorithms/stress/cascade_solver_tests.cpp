@@ -57,7 +57,8 @@ TEST_CASE("cascade solver: steps aside while a dropped coupling is above the tol
   index_bonds(g);
   SpringSolverSettings settings;
   settings.decoupling_tolerance = 1e-3;
-  CascadeSolver solver(g, Material{}, settings);
+  AnalysisPool pool;
+  CascadeSolver solver(Material{}, settings, pool);
   const std::vector<double> loads = node_loads(g, Loads{}, Material{});
   std::vector<double> u(6 * g.nodes.size(), 0.0);
   std::vector<BondForces> forces(g.bonds.size());

@@ -1,0 +1,37 @@
+#pragma once
+/// The clean verdicts of the self-intersection check, remembered by mesh fingerprint
+/// (mesh_fingerprint.h) so that the same mesh is not tested twice.
+///
+/// Design note: the memory is an object its caller creates and passes to the fracturers
+/// (FractureParams::verdicts), as a physics engine passes its world: what one run remembers is
+/// visible in its code, and two runs with two memories never see each other's verdicts. A run that
+/// breaks the same solid many times (a grid breaks the same pre-fracture in every cell of a row)
+/// passes one memory to all of them; a caller that passes none gets every check run.
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <mutex>
+
+namespace shatter {
+
+/// How many clean verdicts a SelfIntersectionVerdicts remembers.
+inline constexpr std::size_t kRememberedCleanMeshes = 64;
+
+/// The fingerprints of the last kRememberedCleanMeshes meshes found clean, oldest overwritten first.
+/// Thread-safe.
+class SelfIntersectionVerdicts {
+ public:
+  /// True when the mesh of `fingerprint` was found clean and is still remembered.
+  [[nodiscard]] bool remembers(std::uint64_t fingerprint) const;
+  /// Remembers that the mesh of `fingerprint` was found clean.
+  void remember(std::uint64_t fingerprint);
+
+ private:
+  mutable std::mutex mutex_;
+  std::array<std::uint64_t, kRememberedCleanMeshes> seen_{};
+  std::size_t count_ = 0;
+  std::size_t next_ = 0;
+};
+
+}  // namespace shatter
