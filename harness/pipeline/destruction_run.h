@@ -27,7 +27,7 @@
 ///   `no_skip` every automatic skip is off (the needs still hold): the pre-fracture is recomputed,
 ///   every standing fragment's surface is measured, every component is re-solved each round and the
 ///   stress solve runs even without gravity or anchors. Fragments, bonds and falling clusters are the
-///   same either way (tests/pipeline/destruction_run_tests.cpp).
+///   same either way (tests/harness/pipeline/destruction_run_tests.cpp).
 
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/result.h"

@@ -36,19 +36,15 @@ class ParallelPlanesFracturer final : public Fracturer {
   int axis_;
 };
 
-/// Von Mises with its utilizations scaled.
-class ScaledVonMisesModel final : public StressModel {
+/// Von Mises with its utilizations scaled: a solver of the built-in model whose results it rescales.
+class ScaledSolver final : public StressSolver {
  public:
-  explicit ScaledVonMisesModel(double factor) : factor_(factor) {}
-  [[nodiscard]] std::string_view name() const override { return "scaled-von-mises"; }
-  [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
-                                              const Material& material) const override {
-    return scaled(inner_.evaluate(graph, loads, material));
-  }
-  [[nodiscard]] Result<StressResult> reevaluate(const SupportGraph& graph, const Loads& loads, const Material& material,
-                                                const StressResult& previous,
-                                                std::span<const int> touched) const override {
-    return scaled(inner_.reevaluate(graph, loads, material, previous, touched));
+  ScaledSolver(std::unique_ptr<StressSolver> inner, double factor) : inner_(std::move(inner)), factor_(factor) {}
+  [[nodiscard]] const SupportGraph& graph() const override { return inner_->graph(); }
+  [[nodiscard]] Result<StressResult> evaluate(const Loads& loads) override { return scaled(inner_->evaluate(loads)); }
+  [[nodiscard]] Result<StressResult> reevaluate(const Loads& loads, const StressResult& previous,
+                                                std::span<const int> touched) override {
+    return scaled(inner_->reevaluate(loads, previous, touched));
   }
 
  private:
@@ -57,6 +53,20 @@ class ScaledVonMisesModel final : public StressModel {
       for (BondStress& b : r->bonds) b.utilization *= factor_;
     return r;
   }
+  std::unique_ptr<StressSolver> inner_;
+  double factor_;
+};
+
+class ScaledVonMisesModel final : public StressModel {
+ public:
+  explicit ScaledVonMisesModel(double factor) : factor_(factor) {}
+  [[nodiscard]] std::string_view name() const override { return "scaled-von-mises"; }
+  [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
+                                                          const Material& material) const override {
+    return std::make_unique<ScaledSolver>(inner_.make_solver(graph, material), factor_);
+  }
+
+ private:
   StrengthCriterionModel inner_{Criterion::von_mises};
   double factor_;
 };

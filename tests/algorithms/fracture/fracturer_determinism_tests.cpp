@@ -4,7 +4,8 @@
 // says how to regenerate them, and when that is allowed).
 
 #include "algorithms/core/primitives.h"
-#include "algorithms/registry/register_all.h"
+#include "algorithms/registry/registries.h"
+#include "tests/support/builtin_registries.h"
 #include "tests/support/determinism_hash.h"
 #include "tests/support/mesh_fixtures.h"
 #include "tests/support/shapes.h"
@@ -41,7 +42,7 @@ Impact impact_on(const Mesh& solid) {
 /// Checks the digests of every hashed fracturer on `solid` (named `solid_name` in the keys), with
 /// and without an impact.
 void check_fracturers_on(const std::string& solid_name, const Mesh& solid) {
-  const Registries& r = registries();
+  const Registries r = test::builtin_registries();
   for (const std::string& name : hashed_fracturers) {
     auto fracturer = r.fracturers.create(name);
     REQUIRE(fracturer.ok());

@@ -3,7 +3,8 @@
 // after propagation hash to the digests committed in tests/fixtures/determinism_hashes.json
 // (tests/support/determinism_hash.h says how to regenerate them, and when that is allowed).
 
-#include "algorithms/registry/register_all.h"
+#include "algorithms/registry/registries.h"
+#include "tests/support/builtin_registries.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
 #include "harness/pipeline/case_structure.h"
@@ -19,14 +20,14 @@ TEST_CASE("determinism: every stress model's evaluation of the wall matches the 
           "[determinism][stress]") {
   Result<Case> c = find_case("wall");
   REQUIRE(c);
-  Result<CaseStructure> structure = build_case_structure(*c);
+  Result<CaseStructure> structure = build_case_structure(*c, test::builtin_registries());
   REQUIRE(structure);
   Loads loads;
   loads.gravity = c->gravity;
   for (const std::string model_name : {"connection-count", "tresca", "von-mises"}) {
     const std::string key = "stress/" + model_name + "/wall";
     INFO(key);
-    auto model = registries().stress_models.create(model_name);
+    auto model = test::builtin_registries().stress_models.create(model_name);
     REQUIRE(model);
     auto p = propagate(**model, structure->graph, loads, c->material, {});
     REQUIRE(p);

@@ -1,6 +1,7 @@
 // One record for results: a figure added in one place (the record of each run, through
 // GridOptions::extra_figures) reaches every output format and reads back from the results JSON.
 
+#include "tests/support/builtin_registries.h"
 #include "harness/cases/case_library.h"
 #include "harness/grid/grid_runner.h"
 #include "harness/results/grid_json_reporter.h"
@@ -44,7 +45,7 @@ TEST_CASE("one record: a figure added to each run's record reaches every output"
   o.frames = 3;
   o.partition_samples = 0;
   o.extra_figures = [](const RunResult& run, FigureRecord& record) { record.add(kExtra, extra_value(run)); };
-  const Result<GridResult> grid = run_grid(*p, o);
+  const Result<GridResult> grid = run_grid(*p, o, test::builtin_registries());
   REQUIRE(grid);
   const GridCell& cell = grid->cells.at(0);
   REQUIRE(cell.samples.size() == 2);

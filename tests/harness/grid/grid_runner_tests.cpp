@@ -1,6 +1,7 @@
 // The grid runner in process, on a one-cell grid of a built-in case: the cell's summaries are what
 // its samples say (medians, the largest step, the union of stages), and the budget is judged.
 
+#include "tests/support/builtin_registries.h"
 #include "harness/cases/case_library.h"
 #include "harness/grid/grid_runner.h"
 #include "harness/results/sample_statistics.h"
@@ -50,7 +51,7 @@ std::vector<double> per_sample(const GridCell& c, const std::string& figure) {
 
 TEST_CASE("grid runner: a one-cell grid summarises its samples", "[grid]") {
   const PreparedCase p = prepared("building");
-  const Result<GridResult> grid = run_grid(p, one_cell());
+  const Result<GridResult> grid = run_grid(p, one_cell(), test::builtin_registries());
   REQUIRE(grid);
   REQUIRE(grid->cells.size() == 1);
   const GridCell& c = grid->cells.front();
@@ -106,13 +107,13 @@ TEST_CASE("grid runner: the budget judges the cell's worst frame", "[grid]") {
   GridOptions o = one_cell();
   o.repetitions = 1;
   o.budget_ms = 1e-9;  // no frame is this fast
-  const Result<GridResult> tight = run_grid(p, o);
+  const Result<GridResult> tight = run_grid(p, o, test::builtin_registries());
   REQUIRE(tight);
   CHECK(tight->budget_ms == 1e-9);
   CHECK_FALSE(tight->cells.front().within_budget);
   CHECK_FALSE(tight->passed());
   o.budget_ms = 1e9;
-  const Result<GridResult> loose = run_grid(p, o);
+  const Result<GridResult> loose = run_grid(p, o, test::builtin_registries());
   REQUIRE(loose);
   CHECK(loose->cells.front().within_budget);
   CHECK(loose->cells.front().within_latency_budget == (loose->cells.front().summaries.value("latency_ms") <= 50.0));

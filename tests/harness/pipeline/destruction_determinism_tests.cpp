@@ -3,6 +3,7 @@
 // committed in tests/fixtures/determinism_hashes.json (tests/support/determinism_hash.h says how to
 // regenerate it, and when that is allowed). Timings and physics poses are not hashed.
 
+#include "tests/support/builtin_registries.h"
 #include "harness/cases/case_library.h"
 #include "harness/pipeline/destruction_run.h"
 #include "tests/support/determinism_hash.h"
@@ -24,7 +25,7 @@ TEST_CASE("determinism: a short run of the building matches the committed hash",
   options.repetition = 0;
   options.frames = 20;  // the impact lands in frame 10
   options.partition_samples = 0;
-  Result<RunResult> r = run_destruction(*prepared, options);
+  Result<RunResult> r = run_destruction(*prepared, options, test::builtin_registries());
   INFO((r ? std::string() : r.error().message));
   REQUIRE(r);
   REQUIRE_FALSE(r->hit.empty());

@@ -2,7 +2,7 @@
 
 #include "harness/stability/fracture_hazards.h"
 #include "harness/process/isolated_run.h"
-#include "harness/stability/isolated_run.h"
+#include "harness/process/isolated_run.h"
 #include "tests/support/builtin_registries.h"
 #include "harness/stability/stability_battery.h"
 #include "tests/support/builtin_registries.h"
