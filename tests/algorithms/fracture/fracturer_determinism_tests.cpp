@@ -21,7 +21,10 @@ namespace {
 
 /// The fracturers whose digests are committed. A new built-in fracturer adds its name here and its
 /// digests to the fixture.
-const std::vector<std::string> hashed_fracturers = {"plane-slice", "cgal-clip", "voronoi", "fem-lite"};
+// Not cgal-clip: the exact reference rounds lazy exact numbers to doubles through their interval
+// approximations, whose last bits differ between optimisation levels (the release and sanitizer builds
+// disagree on the torus and elephant.off). Its determinism within one build is the conformance test's.
+const std::vector<std::string> hashed_fracturers = {"plane-slice", "voronoi", "fem-lite"};
 
 /// A downward hit at the centre of the top of `solid`'s bounding box, radius a tenth of its diagonal.
 Impact impact_on(const Mesh& solid) {
