@@ -6,6 +6,8 @@
 #include "harness/grid/grid_runner.h"
 #include "harness/results/sample_statistics.h"
 
+#include "tests/support/prepared_case.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -16,13 +18,7 @@ namespace {
 
 using namespace shatter;
 
-PreparedCase prepared(const std::string& name) {
-  Result<Case> c = find_case(name);
-  REQUIRE(c);
-  Result<PreparedCase> p = prepare_case(std::move(*c));
-  REQUIRE(p);
-  return std::move(*p);
-}
+using test::prepared;
 
 /// One cell (6 x 3), 3 repetitions of 4 frames, no cache.
 GridOptions one_cell() {

@@ -7,6 +7,8 @@
 #include "harness/pipeline/destruction_run.h"
 #include "tests/support/builtin_registries.h"
 
+#include "tests/support/prepared_case.h"
+
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -17,13 +19,7 @@ namespace {
 
 using namespace shatter;
 
-PreparedCase prepared(const std::string& name) {
-  Result<Case> c = find_case(name);
-  REQUIRE(c);
-  Result<PreparedCase> p = prepare_case(std::move(*c));
-  REQUIRE(p);
-  return std::move(*p);
-}
+using test::prepared;
 
 RunResult run(const PreparedCase& p, ScheduleMode mode, int frames = 40) {
   RunOptions o;
