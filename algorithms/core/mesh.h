@@ -3,7 +3,8 @@
 ///
 /// Design note: a fragment must say which of its faces came from the input (surface) and which were
 /// made by a fracture (cut): metrics compare the surface area against the input, bonds are found on
-/// cut faces only, and renderers texture the two differently. The tag is therefore per triangle and
+/// cut faces only, and renderers texture the two differently. Faces that mesh repair added to close an
+/// input (algorithms/repair/) carry a third tag, so area metrics compare like with like. The tag is therefore per triangle and
 /// travels with the triangle through every slice. Vertices are shared between triangles (indexed),
 /// so closedness and orientation are checked on the index structure, not on coordinates.
 
@@ -28,6 +29,7 @@ using Triangle = std::array<std::int32_t, 3>;
 enum class FaceTag : std::uint8_t {
   surface = 0,  ///< part of the input mesh's boundary
   cut = 1,      ///< made by a fracture (a cap)
+  repair = 2,   ///< added by mesh repair (a filled hole, a wrap), not part of the input's own surface
 };
 
 /// Indexed triangle mesh. Invariant: `tags.size() == triangles.size()`, every index < vertices.size().

@@ -1,0 +1,45 @@
+#pragma once
+/// A solid from any triangle soup: what a user's mesh file needs before a fracturer can take it.
+///
+/// Design note: artists export open meshes, shells of mixed orientation, self-intersecting parts and
+/// duplicated seam vertices; every fracturer needs a closed, consistently oriented solid without
+/// self-intersections (validate_solid, the one acceptance rule). The repair runs CGAL's Polygon Mesh
+/// Processing steps in a fixed order and reports each; it is offline work (loading, never timed as a
+/// fracture). A mesh that already passes the acceptance rule is returned as it is.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+
+#include <string>
+
+namespace shatter {
+
+/// What repair_solid changed. Counts are of the input's elements unless said otherwise.
+struct RepairReport {
+  bool repaired = false;              ///< anything below is non-zero: the solid differs from the input
+  int vertices_merged = 0;            ///< vertices welded into another with the same position
+  int faces_removed = 0;              ///< degenerate, duplicate or dangling faces dropped
+  int faces_reoriented = 0;           ///< faces reversed to orient their shell consistently
+  int holes_filled = 0;               ///< border cycles closed by new faces (tagged FaceTag::repair)
+  double hole_area = 0.0;             ///< area of those new faces, m^2
+  int self_intersections = 0;         ///< intersecting triangle pairs found in the input (0 when none)
+  std::string self_intersection_fix;  ///< "" (none needed), "autorefine" or "alpha-wrap"
+  int sheets_removed = 0;             ///< open parts that enclose no volume, dropped beside a solid
+  int shells = 0;                     ///< closed shells of the result
+  int cavities = 0;                   ///< of those, inward-facing shells inside another (cavities)
+  double time_ms = 0.0;               ///< wall time of the repair, ms (offline: never in a fracture's time)
+  double hausdorff_distance = 0.0;    ///< approximate symmetric Hausdorff distance input <-> result, m
+};
+
+/// The repaired solid and what was done to it.
+struct RepairedSolid {
+  Mesh mesh;            ///< closed, outward, no self-intersection; input faces tagged as given, new faces FaceTag::repair
+  RepairReport report;  ///< what changed
+};
+
+/// Repairs `soup` into a solid (see the design note) or says why none exists, in one line that starts
+/// with `what` (for example "bunny.off: an open sheet encloses no volume"). The input's tags are kept on
+/// the faces that survive; faces the repair adds are tagged FaceTag::repair.
+Result<RepairedSolid> repair_solid(const Mesh& soup, const std::string& what);
+
+}  // namespace shatter
