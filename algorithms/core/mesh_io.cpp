@@ -178,9 +178,9 @@ Status write_obj(const Mesh& mesh, const std::filesystem::path& path) {
   std::string out = "# shatterbench mesh\n";
   out.reserve(mesh.vertices.size() * 60 + mesh.triangles.size() * 24);
   for (const Vec3& p : mesh.vertices) append_vertex(out, "v ", p);
-  for (const FaceTag tag : {FaceTag::surface, FaceTag::cut}) {
+  for (const FaceTag tag : {FaceTag::surface, FaceTag::cut, FaceTag::repair}) {
     if (std::find(mesh.tags.begin(), mesh.tags.end(), tag) == mesh.tags.end()) continue;
-    out += tag == FaceTag::cut ? "g cut\n" : "g surface\n";
+    out += tag == FaceTag::cut ? "g cut\n" : tag == FaceTag::repair ? "g repair\n" : "g surface\n";
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
       if (mesh.tags[f] == tag) append_face(out, "f ", mesh.triangles[f], 1);
   }

@@ -125,7 +125,10 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
       faces.line.push_back(line);
       faces.tag.push_back(tag);
     } else if (key == "g" || key == "o") {
-      tag = tokens.size() == 2 && tokens[1] == "cut" ? FaceTag::cut : FaceTag::surface;
+      tag = tokens.size() != 2       ? FaceTag::surface
+            : tokens[1] == "cut"    ? FaceTag::cut
+            : tokens[1] == "repair" ? FaceTag::repair
+                                    : FaceTag::surface;
     } else if (one_of(key, kFreeForm)) {
       return fail(line, "free-form geometry ('" + std::string(key) + "') is not supported");
     } else if (!one_of(key, kSkipped)) {

@@ -80,6 +80,9 @@ struct MeshFileSpec {
   double scale = 1.0;                ///< uniform, > 0
   Vec3 rotate_deg = Vec3::Zero();    ///< rotations about x, then y, then z, degrees
   Vec3 translate = Vec3::Zero();     ///< m
+  /// Repair the mesh into a solid when it is not one (algorithms/repair/); false refuses it instead
+  /// (`"repair": false`, or `--no-repair` on the command line).
+  bool repair = true;
 };
 
 /// What the case's solid is made from.

@@ -108,7 +108,7 @@ bool has_mesh_extension(const fs::path& file) {
   return ext == ".off" || ext == ".obj";
 }
 
-/// Reads `{"file", "scale", "rotate", "translate"}` and resolves the file.
+/// Reads `{"file", "scale", "rotate", "translate", "repair"}` and resolves the file.
 MeshFileSpec read_file_spec(JsonReader& r, const json& v, std::string_view path, const fs::path& case_dir) {
   MeshFileSpec s;
   const std::string file_at = key_path(path, "file");
@@ -137,6 +137,7 @@ MeshFileSpec read_file_spec(JsonReader& r, const json& v, std::string_view path,
   read_in_range(r, v, path, "scale", s.scale, kScaleRange);
   r.read(v, path, "rotate", s.rotate_deg);
   read_in_range(r, v, path, "translate", s.translate, kCoordinateRange);
+  r.read(v, path, "repair", s.repair);
   return s;
 }
 
@@ -156,7 +157,7 @@ std::pair<double, double> cos_sin_deg(double degrees) {
 }  // namespace
 
 MeshSpec read_mesh_spec(JsonReader& r, const json& value, std::string_view path, const fs::path& case_dir) {
-  if (!r.object(value, path, {"box", "sphere", "cylinder", "torus", "tube", "prism", "file", "scale", "rotate", "translate"}))
+  if (!r.object(value, path, {"box", "sphere", "cylinder", "torus", "tube", "prism", "file", "scale", "rotate", "translate", "repair"}))
     return {};
   const char* primitives[] = {"box", "sphere", "cylinder", "torus", "tube", "prism", "file"};
   std::vector<std::string_view> given;
@@ -169,7 +170,7 @@ MeshSpec read_mesh_spec(JsonReader& r, const json& value, std::string_view path,
   }
   const std::string_view kind = given[0];
   if (kind != "file") {
-    for (const char* key : {"scale", "rotate", "translate"})
+    for (const char* key : {"scale", "rotate", "translate", "repair"})
       if (value.contains(key)) {
         r.fail(key_path(path, key), "only allowed with \"file\" (a primitive has \"center\")");
         return {};
@@ -218,6 +219,10 @@ Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what) {
   return mesh;
 }
 
+void refuse_repair(Case& c) {
+  if (auto* file = std::get_if<MeshFileSpec>(&c.mesh)) file->repair = false;
+}
+
 Result<Solid> build_case_solid(const Case& c) {
   const std::string what = fmt::format("{}: mesh", c.source.empty() ? c.name : c.source.string());
   Result<Mesh> mesh = build_case_mesh(c.mesh, what);
@@ -225,7 +230,10 @@ Result<Solid> build_case_solid(const Case& c) {
   const std::string name = std::holds_alternative<MeshFileSpec>(c.mesh)
                                ? fmt::format("{} ({})", what, std::get<MeshFileSpec>(c.mesh).path.string())
                                : what;
-  return make_solid(std::move(mesh).value(), name);
+  const SolidRepair repair = std::holds_alternative<MeshFileSpec>(c.mesh) && !std::get<MeshFileSpec>(c.mesh).repair
+                                 ? SolidRepair::refuse
+                                 : SolidRepair::repair;
+  return make_solid(std::move(mesh).value(), name, repair);
 }
 
 }  // namespace shatter

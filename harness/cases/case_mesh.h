@@ -24,6 +24,9 @@ Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what);
 /// Errors name the case file and the mesh.
 Result<Solid> build_case_solid(const Case& c);
 
+/// Makes the case refuse a mesh file that is not a solid instead of repairing it (`--no-repair`).
+void refuse_repair(Case& c);
+
 /// Rotation matrix of `degrees` about x, then y, then z; multiples of 90 degrees are exact.
 Eigen::Matrix3d rotation_xyz_deg(const Vec3& degrees);
 

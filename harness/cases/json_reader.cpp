@@ -160,6 +160,16 @@ bool JsonReader::array(const json& value, std::string_view path) {
   return true;
 }
 
+bool JsonReader::convert(const json& value, std::string_view path, bool& out) {
+  if (failed()) return false;
+  if (!value.is_boolean()) {
+    fail(path, fmt::format("expected true or false, got {}", describe(value)));
+    return false;
+  }
+  out = value.get<bool>();
+  return true;
+}
+
 bool JsonReader::convert(const json& value, std::string_view path, double& out) {
   if (failed()) return false;
   if (!value.is_number()) {

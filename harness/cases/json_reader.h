@@ -57,6 +57,7 @@ class JsonReader {
   /// Converts `value` at `path` into `out`; false (and an error naming the expected type) when it
   /// does not fit: a finite number for double, an integer in range for the integer types, a string,
   /// or an array of three finite numbers for Vec3.
+  bool convert(const nlohmann::json& value, std::string_view path, bool& out);
   bool convert(const nlohmann::json& value, std::string_view path, double& out);
   bool convert(const nlohmann::json& value, std::string_view path, int& out);
   bool convert(const nlohmann::json& value, std::string_view path, std::uint64_t& out);

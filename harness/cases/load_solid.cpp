@@ -2,26 +2,54 @@
 
 #include "algorithms/core/mesh_io.h"
 #include "algorithms/core/representable_range.h"
+#include "algorithms/core/shell_classification.h"
+
+#include <algorithm>
+
+#include <utility>
 
 namespace shatter {
+namespace {
 
-Result<Solid> make_solid(Mesh mesh, const std::string& what) {
-  // Before anything measures the mesh: the mass properties of a mesh past the range overflow.
-  if (Status s = check_representable(mesh, what); !s) return s.error();
+/// The mesh as the acceptance rule leaves it, and what the rule normalised; or the rule's reason.
+Result<std::pair<Mesh, ValidationReport>> accepted(Mesh mesh, const std::string& what) {
   Result<ValidationReport> report = validate_solid(mesh, what);
   if (!report) return report.error();
+  return std::pair{std::move(mesh), *report};
+}
+
+}  // namespace
+
+Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair) {
+  // Before anything measures the mesh: the mass properties of a mesh past the range overflow.
+  if (Status s = check_representable(mesh, what); !s) return s.error();
   Solid solid;
-  solid.mass = mass_properties(mesh);
-  solid.area = surface_area(mesh);
-  solid.mesh = std::move(mesh);
-  solid.report = *report;
+  auto as_given = accepted(mesh, what);
+  if (!as_given) {
+    if (repair == SolidRepair::refuse) return as_given.error();
+    Result<RepairedSolid> repaired = repair_solid(mesh, what);
+    if (!repaired) return repaired.error();
+    solid.repair = repaired->report;
+    as_given = accepted(std::move(repaired->mesh), what + " (repaired)");
+    if (!as_given) return as_given.error();
+  }
+  solid.mesh = std::move(as_given->first);
+  solid.report = as_given->second;
+  solid.mass = mass_properties(solid.mesh);
+  solid.area = surface_area(solid.mesh);
+  solid.shells = solid.report.shells;
+  if (solid.shells > 1) {  // one shell is never a cavity
+    const ShellClassification shells = classify_shells(solid.mesh);
+    solid.cavities = static_cast<int>(
+        std::count_if(shells.shells.begin(), shells.shells.end(), [](const Shell& s) { return !s.outward(); }));
+  }
   return solid;
 }
 
-Result<Solid> load_solid(const std::filesystem::path& path) {
+Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair) {
   Result<Mesh> mesh = read_mesh(path);
   if (!mesh) return mesh.error();
-  return make_solid(std::move(*mesh), path.string());
+  return make_solid(std::move(*mesh), path.string(), repair);
 }
 
 }  // namespace shatter

@@ -1,29 +1,43 @@
 #pragma once
-/// Reading a solid from a mesh file for the harness: read, validate, measure.
+/// Reading a solid from a mesh file for the harness: read, repair when needed, validate, measure.
 
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/result.h"
+#include "algorithms/repair/repair_solid.h"
 
 #include <filesystem>
+#include <string>
 
 namespace shatter {
 
-/// A validated input solid.
-struct Solid {
-  Mesh mesh;                  ///< closed, outward
-  MassProperties mass;        ///< of `mesh`, density 1
-  double area = 0.0;          ///< surface area, m^2
-  ValidationReport report;    ///< what validation fixed
+/// What to do with a mesh that is not a solid.
+enum class SolidRepair {
+  repair,  ///< repair it (repair_solid); refuse it only when no solid exists
+  refuse,  ///< refuse it with the acceptance rule's reason (`--no-repair`)
 };
 
-/// Reads `path` (.off or .obj), validates it as a solid and measures it. Errors name the file.
-Result<Solid> load_solid(const std::filesystem::path& path);
+/// A validated input solid.
+struct Solid {
+  Mesh mesh;                  ///< closed, outward; faces repair added are tagged FaceTag::repair
+  MassProperties mass;        ///< of `mesh`, density 1
+  double area = 0.0;          ///< surface area, m^2 (every tag)
+  ValidationReport report;    ///< what validation normalised
+  RepairReport repair;        ///< what repair changed (all zero when the mesh was a solid)
+  int shells = 1;             ///< closed shells of `mesh`
+  int cavities = 0;           ///< of those, inward shells inside another (the cavities)
+};
 
-/// Validates and measures an in-memory mesh; `what` names it in errors. Every input solid of the
-/// harness (mesh files and case meshes alike) passes here: a mesh outside the representable range
-/// (representable_range.h) is refused before it is measured.
-Result<Solid> make_solid(Mesh mesh, const std::string& what);
+/// Reads `path` (.off or .obj), repairs it per `repair`, validates it as a solid and measures it.
+/// Errors name the file.
+Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair = SolidRepair::repair);
+
+/// Repairs (per `repair`), validates and measures an in-memory mesh; `what` names it in errors. Every
+/// input solid of the harness (mesh files and case meshes alike) passes here: a mesh outside the
+/// representable range (representable_range.h) is refused before it is measured. A mesh that passes
+/// the acceptance rule (validate_solid) is never repaired; one that fails it is repaired, and the
+/// repaired mesh must pass the rule in turn.
+Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair = SolidRepair::repair);
 
 }  // namespace shatter

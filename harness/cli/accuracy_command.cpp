@@ -37,6 +37,7 @@ struct AccuracyOptions {
   std::vector<int> fragments = {5, 25, 100};
   std::vector<int> resolutions = {8, 16, 32};
   std::vector<int> slabs = {8, 16, 32, 64};
+  bool no_repair = false;
 };
 
 bool wants(const std::vector<std::string>& families, const char* family) {
@@ -72,6 +73,7 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   for (const std::string& name : o.cases) {
     Result<Case> c = find_case(name);
     if (!c) return fail_input("--case: " + c.error().message);
+    if (o.no_repair) refuse_repair(*c);
     cases.push_back(std::move(*c));
   }
   const std::filesystem::path json_path = o.json;
@@ -144,6 +146,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& regis
       "accuracy", "Time every fracturer and stress model over its knobs against its error; mark the Pareto front");
   cmd->add_option("--case", o->cases, "Case files or built-in names (default: elephant wall cantilever column fixed-beam)");
   cmd->add_option("--json", o->json, "Write the accuracy results JSON here (docs/results.md)");
+  cmd->add_flag("--no-repair", o->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
   cmd->add_option("--repetitions", o->repetitions,
                   "Timed runs per fracture point (stress points: 10 x); the median is reported")
       ->check(CLI::Range(1, kMaxRepetitions))

@@ -6,6 +6,7 @@
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "harness/results/fragment_writer.h"
+#include "harness/results/input_solid_json.h"
 
 #include <nlohmann/json.hpp>
 
@@ -26,11 +27,12 @@ struct FractureOptions {
   std::string out;
   std::vector<double> impact;  // x, y, z; empty: no impact
   double radius = 0.0;
+  bool no_repair = false;
 };
 
 int run_fracture(const FractureOptions& o, const Registries& registries) {
   if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
-  Result<Solid> solid = load_solid(o.mesh);
+  Result<Solid> solid = load_solid(o.mesh, o.no_repair ? SolidRepair::refuse : SolidRepair::repair);
   if (!solid) return fail_input(solid.error().message);
   Result<std::unique_ptr<Fracturer>> fracturer = registries.fracturers.create(o.algorithm);
   if (!fracturer) return fail_input("--algo: " + fracturer.error().message);
@@ -54,18 +56,15 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
   if (!o.out.empty()) {
     if (Status s = write_fragments(o.out, *fragments); !s) return fail_input(s.error().message);
   }
+  nlohmann::ordered_json input = {{"file", o.mesh}};
+  input.update(input_solid_json(*solid));
   const nlohmann::ordered_json out = {
       {"algorithm", o.algorithm},
       {"fragments", fragments->size()},
       {"requested", o.fragments},
       {"seed", o.seed},
       {"time_ms", time_ms},
-      {"input",
-       {{"file", o.mesh},
-        {"triangles", solid->mesh.triangle_count()},
-        {"volume", solid->mass.volume},
-        {"area", solid->area},
-        {"flipped", solid->report.flipped}}},
+      {"input", input},
       {"metrics",
        {{"volume_error", m.volume_error},
         {"all_closed", m.all_closed},
@@ -85,7 +84,9 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
 void add_fracture_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto options = std::make_shared<FractureOptions>();
   CLI::App* cmd = app.add_subcommand("fracture", "Fracture one mesh and print time and error figures as JSON");
-  cmd->add_option("--mesh", options->mesh, "Input solid (.off or .obj), closed and oriented")->required();
+  cmd->add_option("--mesh", options->mesh, "Input mesh (.off or .obj); repaired into a solid when it is not one")
+      ->required();
+  cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh that is not a solid instead of repairing it");
   cmd->add_option("--algo", options->algorithm, "Fracturer name (see `shatterbench list`)")
       ->capture_default_str();
   cmd->add_option("--fragments", options->fragments, "Requested fragment count")

@@ -1,4 +1,5 @@
 #include "harness/cases/case_library.h"
+#include "harness/cases/case_mesh.h"
 #include "harness/cli/command.h"
 #include "harness/results/cell_checks.h"
 #include "harness/grid/grid_runner.h"
@@ -9,6 +10,7 @@
 #include "harness/results/grid_json_reporter.h"
 #include "harness/results/grid_reader.h"
 #include "harness/results/grid_reporter.h"
+#include "harness/results/input_solid_json.h"
 #include "harness/results/run_context.h"
 #include "harness/pipeline/instruction_marks.h"
 
@@ -57,6 +59,7 @@ struct GridCommandOptions {
   std::string schedule;
   double latency_budget_ms = 50.0;
   std::optional<double> timeout_s;
+  bool no_repair = false;
 };
 
 /// "K/N" -> (K, N); false when malformed.
@@ -132,6 +135,7 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   if (o.no_skip) argv.push_back("--no-skip");
   if (o.same_seed) argv.push_back("--same-seed");
   if (o.no_cache) argv.push_back("--no-cache");
+  if (o.no_repair) argv.push_back("--no-repair");
   if (!o.cache_dir.empty()) add("--cache-dir", o.cache_dir);
   if (!o.shard.empty()) add("--shard", o.shard);
   if (!o.schedule.empty()) add("--schedule", o.schedule);
@@ -168,6 +172,7 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
 int run_grid_command(const GridCommandOptions& o, const Registries& registries) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
+  if (o.no_repair) refuse_repair(*c);
 
   GridOptions options;
   options.fracturer = o.fracturer;
@@ -264,7 +269,8 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   }
   if (!grid) return fail_input(grid.error().message);
 
-  GridReport report{*grid, prepared->spec.name, case_to_json(prepared->spec), RunContext{}};
+  GridReport report{*grid, prepared->spec.name, case_to_json(prepared->spec), RunContext{},
+                    input_solid_json(prepared->solid)};
   std::cout << make_grid_reporter(instructions && !marking ? "instructions-markdown" : "markdown")->render(report)
             << std::flush;
   // Instruction mode times are valgrind's, not the game's: the budget gate applies to time mode only.
@@ -341,6 +347,7 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
   cmd->add_option("--cache-dir", o->cache_dir, "Pre-fracture cache folder (default: $SHATTERBENCH_CACHE, "
                                                "$XDG_CACHE_HOME/shatterbench or ~/.cache/shatterbench)");
   cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the pre-fracture cache");
+  cmd->add_flag("--no-repair", o->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
   cmd->add_flag("--update-baseline", o->update_baseline,
                 "Write the results as the case's baseline (BASELINE-DIR/<case>.json, or --json); the only way a baseline changes");
   cmd->add_option("--baseline-dir", o->baseline_dir, "Baseline folder (default results/baselines)");

@@ -32,7 +32,7 @@ int run_merge(const MergeOptions& o) {
   }
   Result<StoredGrid> merged = merge_grids(parts, o.repetitions ? MergeParts::repetitions : MergeParts::shards);
   if (!merged) return fail_input(merged.error().message);
-  const GridReport report{merged->grid, merged->case_name, merged->case_block, merged->context};
+  const GridReport report{merged->grid, merged->case_name, merged->case_block, merged->context, merged->input_block};
   const std::string json = make_grid_reporter("json")->render(report);
   const std::string table = make_grid_reporter("csv")->render(report);
   const FileContent set[] = {{o.out, json}, {csv, table}};

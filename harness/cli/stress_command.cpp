@@ -1,6 +1,7 @@
 #include "algorithms/registry/registries.h"
 #include "algorithms/stress/propagation.h"
 #include "harness/cases/case_library.h"
+#include "harness/cases/case_mesh.h"
 #include "harness/cases/run_settings.h"
 #include "harness/cli/command.h"
 #include "harness/pipeline/case_structure.h"
@@ -19,6 +20,7 @@ struct StressOptions {
   std::string case_name;
   std::string model;  // empty: the case's model
   bool json = false;
+  bool no_repair = false;
 };
 
 nlohmann::ordered_json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
@@ -84,6 +86,7 @@ void print_table(const std::string& case_name, const std::string& model, const S
 int run_stress(const StressOptions& o, const Registries& registries) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
+  if (o.no_repair) refuse_repair(*c);
   CaseOverrides over;
   over.stress_model = o.model;
   const std::string model_name = resolve_settings(*c, over).stress_model;
@@ -115,6 +118,7 @@ void add_stress_command(CLI::App& app, int& exit_code, const Registries& registr
       ->required();
   cmd->add_option("--model", options->model, "Stress model (default: the case's stress.model)");
   cmd->add_flag("--json", options->json, "Print one JSON object instead of a table");
+  cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
   cmd->callback([options, &exit_code, &registries] { exit_code = run_stress(*options, registries); });
 }
 

@@ -27,6 +27,7 @@ struct TableOptions {
   std::vector<std::string> algorithms;
   std::vector<int> fragments = {5, 25, 100};
   int repetitions = 3;
+  bool no_repair = false;
 };
 
 double median(std::vector<double> v) {
@@ -45,7 +46,7 @@ int run_table(TableOptions o, const Registries& r) {
   }
   std::vector<Solid> solids;
   for (const std::string& path : o.meshes) {
-    Result<Solid> s = load_solid(path);
+    Result<Solid> s = load_solid(path, o.no_repair ? SolidRepair::refuse : SolidRepair::repair);
     if (!s) return fail_input(s.error().message);
     solids.push_back(std::move(*s));
   }
@@ -124,7 +125,9 @@ void add_table_command(CLI::App& app, int& exit_code, const Registries& registri
   auto options = std::make_shared<TableOptions>();
   CLI::App* cmd = app.add_subcommand(
       "table", "Fracture meshes with every fracturer and print a Markdown table of time and error figures");
-  cmd->add_option("--mesh", options->meshes, "Input solids (.off or .obj)")->required();
+  cmd->add_option("--mesh", options->meshes, "Input meshes (.off or .obj); repaired into solids when they are not")
+      ->required();
+  cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh that is not a solid instead of repairing it");
   cmd->add_option("--algo", options->algorithms, "Fracturers (default: every registered one)");
   cmd->add_option("--fragments", options->fragments, "Requested fragment counts")
       ->check(CLI::Range(1, kMaxFragments))

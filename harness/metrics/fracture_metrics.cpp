@@ -90,10 +90,12 @@ FractureMetrics fracture_metrics(const Mesh& input, const MassProperties& input_
 
   double volume_sum = 0.0;
   double surface_sum = 0.0;
+  double repair_sum = 0.0;
   double min_volume = std::numeric_limits<double>::infinity();
   for (const Fragment& fragment : fragments) {
     volume_sum += fragment.mass.volume;
     surface_sum += tagged_area(fragment.mesh, FaceTag::surface);
+    repair_sum += tagged_area(fragment.mesh, FaceTag::repair);
     min_volume = std::min(min_volume, fragment.mass.volume);
     if (metrics.all_closed) {
       const std::string problem = fragment_problem(fragment);
@@ -103,7 +105,10 @@ FractureMetrics fracture_metrics(const Mesh& input, const MassProperties& input_
     }
   }
   metrics.volume_error = relative_error(volume_sum, input_mass.volume);
-  metrics.area_error = relative_error(surface_sum, surface_area(input));
+  // Like with like: the input's own surface against the fragments' surface faces, the faces repair
+  // added against the fragments' repair faces.
+  metrics.area_error = std::max(relative_error(surface_sum, tagged_area(input, FaceTag::surface)),
+                                relative_error(repair_sum, tagged_area(input, FaceTag::repair)));
   // std::min skips NaN volumes (comparisons with NaN are false); all-NaN leaves infinity.
   metrics.min_fragment_volume = fragments.empty() || !std::isfinite(min_volume) ? 0.0 : min_volume;
 

@@ -46,8 +46,10 @@ struct FractureMetrics {
   /// ordinary solid k = 1: a point in zero or several fragments is an error. An input of overlapping
   /// shells (k = 2 where two overlap) must be covered as often by the fragments.
   double partition_error = 0.0;
-  /// |sum of the fragments' surface-tagged area - input area| / input area (dimensionless); 0 when
-  /// the input has no area. Cut faces are excluded: they are new surface, not input surface.
+  /// Relative error of the fragments' area against the input's, tag by tag (dimensionless): the larger of
+  /// |sum of surface-tagged area - input's surface-tagged area| / input's surface-tagged area and the same
+  /// for repair-tagged faces (faces that mesh repair added; 0 when the input has none). Cut faces are
+  /// excluded: they are new surface, not input surface. 0 when the input has no area.
   double area_error = 0.0;
   /// Smallest fragment volume, m^3 (slivers show here); 0 when there is no fragment.
   double min_fragment_volume = 0.0;

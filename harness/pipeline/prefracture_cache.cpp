@@ -182,7 +182,7 @@ bool plausible(const Fragment& f) {
   for (const Vec3& v : f.mesh.vertices)
     if (!v.allFinite()) return false;
   for (const FaceTag t : f.mesh.tags)
-    if (t != FaceTag::surface && t != FaceTag::cut) return false;
+    if (t != FaceTag::surface && t != FaceTag::cut && t != FaceTag::repair) return false;
   return std::isfinite(f.mass.volume) && f.mass.centroid.allFinite() && f.mass.inertia.allFinite();
 }
 

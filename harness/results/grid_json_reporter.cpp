@@ -145,19 +145,20 @@ nlohmann::ordered_json case_to_json(const Case& c) {
 }
 
 nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::ordered_json& case_block,
-                                    const RunContext& context) {
+                                    const RunContext& context, const nlohmann::ordered_json& input_block) {
   Json cells = Json::array();
   for (const GridCell& cell : grid.cells) cells.push_back(grid_cell_to_json(cell));
   Json out = {{"schema_version", kGridSchemaVersion},
               {"metric", grid.metric},
               {"context", to_json(context)},
-              {"case", case_block},
-              {"budget_ms", grid.budget_ms},
+              {"case", case_block}};
+  if (!input_block.is_null()) out["input"] = input_block;
+  out.update(Json{{"budget_ms", grid.budget_ms},
               {"latency_budget_ms", grid.latency_budget_ms},
               {"repetitions", grid.repetitions},
               {"frames", grid.frames},
               {"no_skip", grid.no_skip},
-              {"same_seed", grid.same_seed}};
+              {"same_seed", grid.same_seed}});
   if (grid.shard_count > 1) out["shard"] = {{"index", grid.shard_index}, {"count", grid.shard_count}};
   if (grid.cell_timeout_s > 0.0) out["cell_timeout_s"] = grid.cell_timeout_s;
   out["passed"] = grid.passed();
@@ -167,7 +168,7 @@ nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::orde
 }
 
 std::string JsonGridReporter::render(const GridReport& r) const {
-  return grid_to_json(r.grid, r.case_block, r.context).dump(1) + "\n";
+  return grid_to_json(r.grid, r.case_block, r.context, r.input_block).dump(1) + "\n";
 }
 
 }  // namespace shatter

@@ -25,11 +25,11 @@ nlohmann::ordered_json grid_cell_to_json(const GridCell& cell);
 /// The results JSON's `case` block of `c`.
 nlohmann::ordered_json case_to_json(const Case& c);
 
-/// The results JSON: `schema_version`, `context`, `case` (`case_block`, from case_to_json),
-/// `budget_ms`, `repetitions`, `frames`, `no_skip`, `shard` (when a shard), `cell_timeout_s` (when
+/// The results JSON: `schema_version`, `context`, `case` (`case_block`, from case_to_json), `input`
+/// (`input_block`, from input_solid_json, when not null), `budget_ms`, `repetitions`, `frames`, `no_skip`, `shard` (when a shard), `cell_timeout_s` (when
 /// set), `passed`, `wall_s`, `cells`.
 nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::ordered_json& case_block,
-                                    const RunContext& context);
+                                    const RunContext& context, const nlohmann::ordered_json& input_block = nullptr);
 
 /// Writes `figure` into `object` under its name, a dot nesting it in an object of that key.
 void put_figure(nlohmann::ordered_json& object, const Figure& figure);

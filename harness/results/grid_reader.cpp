@@ -308,6 +308,7 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
     out.context = std::move(*context);
     out.case_block = at(j, "case", "");
     out.case_name = text(out.case_block, "name", "case");
+    if (j.contains("input")) out.input_block = j.at("input");
     if (j.contains("metric")) out.metric = text(j, "metric", "");
     if (out.metric != "time" && out.metric != "instructions")
       return Error{what + ": metric: expected \"time\" or \"instructions\", got \"" + out.metric + "\""};

@@ -17,6 +17,7 @@ struct StoredGrid {
   std::filesystem::path path;           ///< where it was read from
   RunContext context;                   ///< its `context`
   nlohmann::ordered_json case_block;    ///< its `case`, as written
+  nlohmann::ordered_json input_block;   ///< its `input` (the solid and its repairs), null when absent
   std::string case_name;                ///< `case.name`
   std::string metric = "time";          ///< `metric`: "time" or "instructions"
   GridResult grid;                      ///< budget, repetitions, frames, cells with samples

@@ -21,6 +21,8 @@ struct GridReport {
   std::string case_name;                   ///< the case's name
   nlohmann::ordered_json case_block;       ///< the results JSON's `case` block (case_to_json)
   RunContext context;                      ///< where and how it ran
+  /// The results JSON's `input` block (input_solid_json): the solid and its repairs; null leaves it out.
+  nlohmann::ordered_json input_block = nullptr;
 };
 
 /// One output format of a grid's results.
