@@ -4,11 +4,13 @@
 /// Design note: artists export open meshes, shells of mixed orientation, self-intersecting parts and
 /// duplicated seam vertices; every fracturer needs a closed, consistently oriented solid without
 /// self-intersections (validate_solid, the one acceptance rule). The repair runs CGAL's Polygon Mesh
-/// Processing steps in a fixed order and reports each; it is offline work (loading, never timed as a
-/// fracture). A mesh that already passes the acceptance rule is returned as it is.
+/// Processing steps in a fixed order and reports each (docs/repair.md); it is offline work (loading,
+/// never timed as a fracture). The caller runs it on meshes the acceptance rule refuses; a valid solid
+/// passes through with its triangles unchanged (vertices renumbered), Hausdorff distance 0.
 
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
+#include "algorithms/repair/hausdorff_distance.h"
 
 #include <string>
 
@@ -37,9 +39,22 @@ struct RepairedSolid {
   RepairReport report;  ///< what changed
 };
 
+/// Settings of repair_solid; every length is relative to the input, so none has a unit.
+struct RepairOptions {
+  /// An open part is a solid with holes when (volume its filling encloses) / (filling area)^(3/2),
+  /// its depth / width, is at least this; else an open sheet, dropped (docs/repair.md "Holes or sheets").
+  double min_depth_ratio = 0.05;
+  /// The fallback wrap: alpha (no ball of this radius passes through it), fraction of the bbox diagonal.
+  double wrap_alpha = 1.0 / 100.0;
+  /// The fallback wrap: its distance outside the input, fraction of the bbox diagonal.
+  double wrap_offset = 1.0 / 2000.0;
+  /// Sampling of the Hausdorff distance.
+  repair::HausdorffSampling hausdorff;
+};
+
 /// Repairs `soup` into a solid (see the design note) or says why none exists, in one line that starts
 /// with `what` (for example "bunny.off: an open sheet encloses no volume"). The input's tags are kept on
 /// the faces that survive; faces the repair adds are tagged FaceTag::repair.
-Result<RepairedSolid> repair_solid(const Mesh& soup, const std::string& what);
+Result<RepairedSolid> repair_solid(const Mesh& soup, const std::string& what, const RepairOptions& options = {});
 
 }  // namespace shatter
