@@ -1,11 +1,15 @@
 #include "algorithms/repair/autorefine_surface.h"
 
+#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_components.h"
 #include "algorithms/core/self_intersection.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <memory>
 #include <utility>
@@ -78,15 +82,34 @@ bool has_zero_area_triangle(const Mesh& mesh) {
   return false;
 }
 
+bool has_coincident_vertices(const SurfaceMesh& surface) {
+  std::vector<Point> points;
+  for (SurfaceMesh::Vertex_index v : surface.vertices())
+    if (!surface.is_isolated(v)) points.push_back(surface.point(v));
+  std::sort(points.begin(), points.end());
+  return std::adjacent_find(points.begin(), points.end()) != points.end();
+}
+
 }  // namespace
 
 Autorefinement autorefine_surface(SurfaceMesh& surface) {
   Autorefinement result;
+  // The project's rule first: corners at equal positions are shared, so faces split apart at a
+  // non-manifold vertex or edge only touch (CGAL's test reports those).
+  const Mesh before = to_mesh(surface, {});
+  if (!find_self_intersection(before)) return result;
   std::vector<std::pair<FaceIndex, FaceIndex>> pairs;
   PMP::self_intersections(surface, std::back_inserter(pairs));
   result.pairs = static_cast<int>(pairs.size());
   if (pairs.empty()) return result;
 
+  // The corefinement identifies intersection points with vertices by position and fails (even
+  // crashes) when two vertices share one; such a surface goes to the fallback.
+  if (has_coincident_vertices(surface)) {
+    result.resolved = false;
+    result.failure = "vertices at equal positions, which the autorefinement cannot take";
+    return result;
+  }
   ExactMesh exact = to_exact(surface);
   OriginVisitor visitor;
   visitor.origin = exact.property_map<ExactFace, std::int32_t>("f:origin").first;
@@ -98,6 +121,14 @@ Autorefinement autorefine_surface(SurfaceMesh& surface) {
   auto [mesh, origins] = rounded(exact);
   if (mesh.empty()) {
     result.failure = "autorefinement removed every face";
+    return result;
+  }
+  // The autorefinement keeps the wrong patches where the surface around an intersection is folded
+  // or was open: the union of the parts holds at least the largest part, so much less is a failure.
+  double largest = 0.0;
+  for (const Mesh& part : connected_components(before)) largest = std::max(largest, std::abs(signed_volume(part)));
+  if (std::abs(signed_volume(mesh)) < 0.5 * largest) {
+    result.failure = "the autorefinement lost more than half of the largest part's volume";
     return result;
   }
   if (has_zero_area_triangle(mesh)) {

@@ -1,3 +1,7 @@
+// triangulate_refine_and_fair_hole solves its fairing system with Eigen (a dependency of the tree).
+#ifndef CGAL_EIGEN3_ENABLED
+#define CGAL_EIGEN3_ENABLED
+#endif
 #include "algorithms/repair/fill_holes.h"
 
 #include <CGAL/Polygon_mesh_processing/border.h>
@@ -26,7 +30,7 @@ struct PartMeasure {
 
 }  // namespace
 
-HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio) {
+HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio, bool refine_and_fair) {
   HoleFilling report;
   std::vector<Halfedge> cycles;
   PMP::extract_boundary_cycles(surface, std::back_inserter(cycles));
@@ -37,8 +41,14 @@ HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio) {
   for (Halfedge h : cycles) {
     if (!surface.is_border(h)) continue;  // closed by an earlier filling
     std::vector<FaceIndex> added;
-    PMP::triangulate_hole(surface, h, std::back_inserter(added),
-                          PMP::parameters::use_2d_constrained_delaunay_triangulation(true));
+    if (refine_and_fair) {
+      std::vector<SurfaceMesh::Vertex_index> new_vertices;
+      PMP::triangulate_refine_and_fair_hole(surface, h, std::back_inserter(added), std::back_inserter(new_vertices),
+                                            PMP::parameters::use_2d_constrained_delaunay_triangulation(true));
+    } else {
+      PMP::triangulate_hole(surface, h, std::back_inserter(added),
+                            PMP::parameters::use_2d_constrained_delaunay_triangulation(true));
+    }
     if (added.empty()) {
       ++report.holes_unfilled;
       continue;

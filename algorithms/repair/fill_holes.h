@@ -23,7 +23,9 @@ struct HoleFilling {
 /// Fills every border cycle with CGAL's triangulate_hole (a minimum-weight triangulation of the
 /// cycle, searched in its 3D Delaunay triangulation, or a 2D constrained Delaunay triangulation when
 /// the cycle is flat), then removes each filled part whose depth / width ratio (see the design note)
-/// is below `min_depth_ratio`, filling included.
-HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio);
+/// is below `min_depth_ratio`, filling included. With `refine_and_fair`, each filling is instead
+/// made by triangulate_refine_and_fair_hole (refined to the border's edge lengths, then faired to
+/// continue the surrounding curvature; docs/repair.md measures both).
+HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio, bool refine_and_fair = false);
 
 }  // namespace shatter::repair

@@ -67,7 +67,7 @@ Result<RepairedSolid> repair_solid(const Mesh& soup, const std::string& what, co
   report.vertices_merged = cleaned.vertices_merged;
   report.faces_removed = cleaned.faces_removed + repair::stitch_surface(surface);
 
-  const repair::HoleFilling holes = repair::fill_holes(surface, options.min_depth_ratio);
+  const repair::HoleFilling holes = repair::fill_holes(surface, options.min_depth_ratio, options.refine_and_fair_holes);
   report.holes_filled = holes.holes_filled;
   report.hole_area = holes.hole_area;
   report.sheets_removed = holes.sheets_removed;

@@ -44,6 +44,9 @@ struct RepairOptions {
   /// An open part is a solid with holes when (volume its filling encloses) / (filling area)^(3/2),
   /// its depth / width, is at least this; else an open sheet, dropped (docs/repair.md "Holes or sheets").
   double min_depth_ratio = 0.05;
+  /// Fill holes with CGAL's triangulate_refine_and_fair_hole instead of triangulate_hole (a smooth
+  /// patch instead of the flat minimal one; off: docs/repair.md "Repair steps" has the figures).
+  bool refine_and_fair_holes = false;
   /// The fallback wrap: alpha (no ball of this radius passes through it), fraction of the bbox diagonal.
   double wrap_alpha = 1.0 / 100.0;
   /// The fallback wrap: its distance outside the input, fraction of the bbox diagonal.

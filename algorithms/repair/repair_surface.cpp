@@ -1,6 +1,5 @@
 #include "algorithms/repair/repair_surface.h"
 
-#include <cassert>
 
 namespace shatter::repair {
 
@@ -11,6 +10,7 @@ Mesh to_mesh(SurfaceMesh& surface, const std::vector<FaceTag>& input_tags, std::
   std::vector<std::int32_t> index(surface.number_of_vertices() + surface.number_of_removed_vertices(), -1);
   mesh.vertices.reserve(surface.number_of_vertices());
   for (SurfaceMesh::Vertex_index v : surface.vertices()) {
+    if (surface.is_isolated(v)) continue;
     const Point& p = surface.point(v);
     index[v.idx()] = mesh.add_vertex(Vec3(p.x(), p.y(), p.z()));
   }
@@ -22,9 +22,9 @@ Mesh to_mesh(SurfaceMesh& surface, const std::vector<FaceTag>& input_tags, std::
     const std::int32_t b = index[surface.target(surface.next(h)).idx()];
     const std::int32_t c = index[surface.source(h).idx()];
     const std::int32_t from = origin[f];
-    assert(from < static_cast<std::int32_t>(input_tags.size()));
+    const bool tagged = from >= 0 && static_cast<std::size_t>(from) < input_tags.size();
     if (origins != nullptr) origins->push_back(from);
-    mesh.add_triangle(c, a, b, from >= 0 ? input_tags[static_cast<std::size_t>(from)] : FaceTag::repair);
+    mesh.add_triangle(c, a, b, tagged ? input_tags[static_cast<std::size_t>(from)] : from >= 0 ? FaceTag::surface : FaceTag::repair);
   }
   return mesh;
 }

@@ -34,8 +34,8 @@ inline OriginMap origin_map(SurfaceMesh& mesh) {
   return mesh.add_property_map<FaceIndex, std::int32_t>("f:origin", -1).first;
 }
 
-/// The surface as a Mesh: vertices in index order (removed elements skipped), faces tagged with the
-/// tag of their origin in `input_tags`, or FaceTag::repair for faces the repair made. With `origins`,
+/// The surface as a Mesh: vertices in index order (removed and isolated ones skipped), faces tagged with the
+/// tag of their origin in `input_tags` (surface when it has none), or FaceTag::repair for faces the repair made. With `origins`,
 /// also each triangle's origin (#F, -1 for a new face).
 Mesh to_mesh(SurfaceMesh& surface, const std::vector<FaceTag>& input_tags, std::vector<std::int32_t>* origins = nullptr);
 

@@ -53,12 +53,22 @@ SoupSurface soup_to_surface(const Mesh& soup) {
   out.faces_removed = static_cast<int>(soup.triangles.size() - polygons.size());
 
   PMP::orient_polygon_soup(points, polygons);
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, out.surface);
+  if (PMP::is_polygon_soup_a_polygon_mesh(polygons)) {
+    PMP::polygon_soup_to_polygon_mesh(points, polygons, out.surface);
+  } else {  // not expected after orient_polygon_soup; faces that do not fit are dropped
+    for (const Point& p : points) out.surface.add_vertex(p);
+    for (const Polygon& polygon : polygons)
+      if (out.surface.add_face(SurfaceMesh::Vertex_index(static_cast<std::uint32_t>(polygon[0])),
+                               SurfaceMesh::Vertex_index(static_cast<std::uint32_t>(polygon[1])),
+                               SurfaceMesh::Vertex_index(static_cast<std::uint32_t>(polygon[2]))) == SurfaceMesh::null_face())
+        ++out.faces_removed;
+  }
   OriginMap origin = origin_map(out.surface);
-  std::size_t i = 0;
   for (FaceIndex f : out.surface.faces()) {
-    const Polygon& polygon = polygons[i++];
-    const auto found = origin_of.find(corner_key(points[polygon[0]], points[polygon[1]], points[polygon[2]]));
+    const auto h = out.surface.halfedge(f);
+    const auto found = origin_of.find(corner_key(out.surface.point(out.surface.source(h)),
+                                                 out.surface.point(out.surface.target(h)),
+                                                 out.surface.point(out.surface.target(out.surface.next(h)))));
     origin[f] = found != origin_of.end() ? found->second : -1;
   }
   return out;
