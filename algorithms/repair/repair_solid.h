@@ -48,9 +48,9 @@ struct RepairOptions {
   /// patch instead of the flat minimal one; off: docs/repair.md "Repair steps" has the figures).
   bool refine_and_fair_holes = false;
   /// The fallback wrap: alpha (no ball of this radius passes through it), fraction of the bbox diagonal.
-  double wrap_alpha = 1.0 / 100.0;
+  double wrap_alpha = 1.0 / 50.0;
   /// The fallback wrap: its distance outside the input, fraction of the bbox diagonal.
-  double wrap_offset = 1.0 / 2000.0;
+  double wrap_offset = 1.0 / 600.0;
   /// Sampling of the Hausdorff distance.
   repair::HausdorffSampling hausdorff;
 };
