@@ -20,6 +20,10 @@ namespace {
 
 using Halfedge = SurfaceMesh::Halfedge_index;
 
+/// Longest border cycle whose triangulation is searched exhaustively when the Delaunay-restricted
+/// search fails (the search costs the cube of the length: 300 edges take about a second).
+constexpr std::size_t max_exhaustive_cycle = 300;
+
 /// Per part: signed volume (about the part's first corner, against cancellation), filling area.
 struct PartMeasure {
   bool has_origin = false;
@@ -37,7 +41,8 @@ HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio, bool refine
   if (cycles.empty()) return report;
 
   auto is_fill = surface.add_property_map<FaceIndex, bool>("f:repair_fill", false).first;
-  std::vector<FaceIndex> filled;  // one new face per filled cycle
+  std::vector<FaceIndex> filled;    // one new face per filled cycle
+  std::vector<FaceIndex> unfilled;  // one face beside each cycle that could not be filled
   for (Halfedge h : cycles) {
     if (!surface.is_border(h)) continue;  // closed by an earlier filling
     std::vector<FaceIndex> added;
@@ -49,8 +54,13 @@ HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio, bool refine
       PMP::triangulate_hole(surface, h, std::back_inserter(added),
                             PMP::parameters::use_2d_constrained_delaunay_triangulation(true));
     }
+    if (added.empty() && surface.is_border(h) && CGAL::halfedges_around_face(h, surface).size() <= max_exhaustive_cycle) {
+      // The Delaunay-restricted search found no triangulation: search all of them (cubic in the length).
+      PMP::triangulate_hole(surface, h, std::back_inserter(added), PMP::parameters::use_delaunay_triangulation(false));
+    }
     if (added.empty()) {
       ++report.holes_unfilled;
+      unfilled.push_back(surface.face(surface.opposite(h)));
       continue;
     }
     filled.push_back(added.front());
@@ -76,8 +86,16 @@ HoleFilling fill_holes(SurfaceMesh& surface, double min_depth_ratio, bool refine
   }
   std::vector<std::size_t> sheets;
   std::vector<bool> is_sheet(parts, false);
+  std::vector<bool> open(parts, false);
+  for (FaceIndex f : unfilled) open[part[f]] = true;
   for (std::size_t p = 0; p < parts; ++p) {
     const PartMeasure& m = measure[p];
+    if (open[p]) {  // a border no triangulation closes (a flat sheet whose corners all lie on it)
+      sheets.push_back(p);
+      is_sheet[p] = true;
+      ++report.sheets_removed;
+      continue;
+    }
     if (m.fill_area <= 0.0) continue;
     const double depth_ratio = std::abs(m.six_volume) / 6.0 / std::pow(m.fill_area, 1.5);
     if (depth_ratio < min_depth_ratio) {
