@@ -1,15 +1,18 @@
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_io.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
 #include "algorithms/core/random.h"
 #include "algorithms/core/self_intersection.h"
 #include "algorithms/core/shell_classification.h"
 #include "algorithms/repair/repair_solid.h"
+#include "tests/support/mesh_fixtures.h"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <utility>
@@ -224,4 +227,32 @@ TEST_CASE("repair: bad input is one error line", "[repair]") {
   Mesh nan_box = make_box(Vec3::Ones());
   nan_box.vertices[0].x() = std::nan("");
   CHECK_THAT(repair_solid(nan_box, "nan.off").error().message, StartsWith("nan.off: ") && Contains("non-finite"));
+}
+
+TEST_CASE("repair: data set open cubes are filled to their bounding box, flat sheets refused", "[repair]") {
+  if (!test::have_meshes()) return;
+  for (const std::string name : {"cube-ouvert.off", "open_cube.off"}) {
+    INFO(name);
+    const std::filesystem::path path = test::mesh_dir() / name;
+    REQUIRE(std::filesystem::exists(path));
+    const Result<Mesh> mesh = read_mesh(path);
+    REQUIRE(mesh.ok());
+    const RepairedSolid solid = repaired(*mesh);
+    require_solid(solid.mesh);
+    const Aabb box = bounding_box(solid.mesh);  // of the used vertices (cube-ouvert.off has a stray one)
+    const Vec3 size = box.max - box.min;
+    // An axis-aligned box missing a face: the filled solid is the box of its corners.
+    CHECK(signed_volume(solid.mesh) == Approx(size.prod()).epsilon(1e-12));
+    CHECK(solid.report.holes_filled == 1);
+  }
+  for (const std::string name : {"quad.off", "triangle.off", "mesh_with_colors.off"}) {
+    INFO(name);
+    const std::filesystem::path path = test::mesh_dir() / name;
+    REQUIRE(std::filesystem::exists(path));
+    const Result<Mesh> mesh = read_mesh(path);
+    REQUIRE(mesh.ok());
+    const Result<RepairedSolid> result = repair_solid(*mesh, name);
+    REQUIRE_FALSE(result.ok());
+    CHECK_THAT(result.error().message, StartsWith(name + ": ") && Contains("open sheet"));
+  }
 }
