@@ -20,12 +20,12 @@ namespace shatter {
 struct RepairReport {
   bool repaired = false;              ///< anything below is non-zero: the solid differs from the input
   int vertices_merged = 0;            ///< vertices welded into another with the same position
-  int faces_removed = 0;              ///< degenerate, duplicate or dangling faces dropped
+  int faces_removed = 0;              ///< degenerate or duplicate faces dropped (soup cleaning, stitching)
   int faces_reoriented = 0;           ///< faces reversed to orient their shell consistently
   int holes_filled = 0;               ///< border cycles closed by new faces (tagged FaceTag::repair)
   double hole_area = 0.0;             ///< area of those new faces, m^2
-  int self_intersections = 0;         ///< intersecting triangle pairs found in the input (0 when none)
-  std::string self_intersection_fix;  ///< "" (none needed), "autorefine" or "alpha-wrap"
+  int self_intersections = 0;         ///< intersecting face pairs (CGAL's count) of the closed surface, 0 when the project's test finds none
+  std::string self_intersection_fix;  ///< "" (none needed), "autorefine", or "alpha-wrap" (the one fallback, whatever failed)
   int sheets_removed = 0;             ///< open parts that enclose no volume, dropped beside a solid
   int shells = 0;                     ///< closed shells of the result
   int cavities = 0;                   ///< of those, inward-facing shells inside another (cavities)
