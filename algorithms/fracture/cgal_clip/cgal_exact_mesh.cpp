@@ -1,8 +1,9 @@
 #include "algorithms/fracture/cgal_clip/cgal_exact_mesh.h"
 
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/pinched_vertices.h"
 
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
@@ -88,7 +89,7 @@ void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out) {
     FaceIndex face;
   };
   auto component = mesh.add_property_map<FaceIndex, std::size_t>("f:component", 0).first;
-  const std::size_t count = PMP::connected_components(mesh, component);
+  const std::size_t count = PMP::volume_connected_components(mesh, component);
   std::vector<FaceKey> keys;
   keys.reserve(mesh.number_of_faces());
   for (FaceIndex f : mesh.faces()) {
@@ -128,7 +129,9 @@ void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out) {
   }
 }
 
-SurfaceMesh exact_solid(const Mesh& solid) {
+SurfaceMesh exact_solid(const Mesh& input) {
+  Mesh solid = input;
+  split_pinched_vertices(solid);  // a Surface_mesh vertex has one fan
   SurfaceMesh mesh;
   CutMap is_cut = cut_map(mesh);
   std::vector<VertexIndex> index(solid.vertices.size(), SurfaceMesh::null_vertex());
@@ -176,20 +179,6 @@ Fragment to_fragment(Piece& piece) {
   }
   fragment.mass = mass_properties(out);
   return fragment;
-}
-
-Status check_solid(const Mesh& solid) {
-  if (solid.empty()) return Error{"cgal-clip: the input mesh has no triangles"};
-  if (solid.tags.size() != solid.triangles.size())
-    return Error{"cgal-clip: the input mesh has " + std::to_string(solid.tags.size()) + " tags for " +
-                 std::to_string(solid.triangles.size()) + " triangles"};
-  for (const Vec3& p : solid.vertices)
-    if (!p.allFinite()) return Error{"cgal-clip: the input mesh has a non-finite vertex"};
-  const auto vertex_count = static_cast<std::int64_t>(solid.vertices.size());
-  for (const Triangle& t : solid.triangles)
-    for (std::int32_t i : t)
-      if (i < 0 || i >= vertex_count) return Error{"cgal-clip: the input mesh has a vertex index out of range"};
-  return {};
 }
 
 }  // namespace shatter::cgal_exact
