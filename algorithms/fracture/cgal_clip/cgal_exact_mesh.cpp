@@ -8,6 +8,7 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <algorithm>
+#include <map>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -163,19 +164,26 @@ Fragment to_fragment(Piece& piece) {
   CutMap is_cut = cut_map(mesh);
   Fragment fragment;
   Mesh& out = fragment.mesh;
+  // Exact points closer than a rounding step (a cut through a vertex's immediate neighbourhood) round
+  // to one double point: they become one vertex, and the triangles between them, which have no area
+  // in doubles, are dropped (collapsing an edge of zero length keeps the surface closed).
   std::vector<std::int32_t> index(mesh.number_of_vertices(), -1);
+  std::map<std::array<double, 3>, std::int32_t> vertex_at;
   out.vertices.reserve(mesh.number_of_vertices());
   for (VertexIndex v : mesh.vertices()) {
     const Vec3 p = rounded(mesh.point(v));
     if (!p.allFinite()) throw ClipFailure("a fragment vertex is not finite in double precision");
-    index[v] = out.add_vertex(p);
+    const auto [it, inserted] = vertex_at.try_emplace({p.x() + 0.0, p.y() + 0.0, p.z() + 0.0}, -1);
+    if (inserted) it->second = out.add_vertex(p);
+    index[v] = it->second;
   }
   out.triangles.reserve(mesh.number_of_faces());
   out.tags.reserve(mesh.number_of_faces());
   for (FaceIndex f : mesh.faces()) {
     const auto h = mesh.halfedge(f);
-    out.add_triangle(index[mesh.source(h)], index[mesh.target(h)], index[mesh.target(mesh.next(h))],
-                     is_cut[f] ? FaceTag::cut : FaceTag::surface);
+    const std::int32_t a = index[mesh.source(h)], b = index[mesh.target(h)], c = index[mesh.target(mesh.next(h))];
+    if (a == b || b == c || c == a) continue;
+    out.add_triangle(a, b, c, is_cut[f] ? FaceTag::cut : FaceTag::surface);
   }
   fragment.mass = mass_properties(out);
   return fragment;

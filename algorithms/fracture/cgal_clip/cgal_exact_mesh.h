@@ -95,7 +95,8 @@ void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out);
 SurfaceMesh exact_solid(const Mesh& solid);
 
 /// Converts one piece into a fragment: points rounded from their exact values (the same point gives
-/// the same doubles in every fragment), mass properties.
+/// the same doubles in every fragment; points that round to one double point become one vertex and
+/// the triangles between them, of no area, are dropped), mass properties.
 Fragment to_fragment(Piece& piece);
 
 }  // namespace shatter::cgal_exact
