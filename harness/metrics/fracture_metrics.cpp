@@ -2,7 +2,7 @@
 
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/random.h"
-#include "algorithms/core/solid_check.h"
+#include "algorithms/core/shell_classification.h"
 #include "algorithms/core/winding_number.h"
 
 #include <fmt/core.h>
@@ -12,7 +12,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace shatter {
@@ -27,16 +26,17 @@ double relative_error(double value, double reference) {
   return std::isfinite(error) ? error : std::numeric_limits<double>::max();
 }
 
-/// Why `fragment` is not a valid solid, or "" when it is: the acceptance rule every fracturer's input
-/// passes (solid_check.h; cavities allowed), after the fragment's own recorded volume.
+/// Why `fragment` is not a valid solid, or "" when it is: the rule every input solid passes
+/// (mesh_validation.h, shell_classification.h), except that a fragment may hold cavities.
 std::string fragment_problem(const Fragment& fragment) {
   const double volume = fragment.mass.volume;
   if (fragment.mesh.empty()) return "empty";
   if (!all_finite(fragment.mesh)) return "a non-finite coordinate";
   if (!is_closed_and_oriented(fragment.mesh)) return "not closed and consistently oriented";
   if (!std::isfinite(volume) || !(volume > 0.0)) return "volume " + fmt::format("{:.6g}", volume) + " is not positive";
-  constexpr std::string_view who = "fragment";
-  if (const Status s = check_solid(fragment.mesh, who, nullptr); !s) return s.error().message.substr(who.size() + 2);
+  const ShellClassification shells = classify_shells(fragment.mesh);
+  if (shells.verdict == SolidVerdict::invalid) return shells.reason;
+  if (shells.inverted) return "faces inward";
   return {};
 }
 

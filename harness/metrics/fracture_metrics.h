@@ -35,8 +35,8 @@ struct FractureMetrics {
   /// the largest finite double when a fragment volume is not finite.
   double volume_error = 0.0;
   /// Every fragment is non-empty, finite, closed and consistently oriented, with positive volume,
-  /// and passes the acceptance rule (check_solid: its shells form a solid, cavities allowed, and it
-  /// does not intersect itself). True for an empty fragment list.
+  /// and its shells form a solid (classify_shells: outward shells that neither cross nor nest with
+  /// one orientation; cavities allowed). True for an empty fragment list.
   bool all_closed = true;
   /// Why the first invalid fragment fails all_closed ("fragment 3: not closed and consistently
   /// oriented"), empty when all_closed.
