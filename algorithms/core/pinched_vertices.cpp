@@ -1,7 +1,9 @@
 #include "algorithms/core/pinched_vertices.h"
 
-#include <cassert>
+#include <Eigen/Geometry>
+
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <numeric>
 #include <unordered_map>
@@ -22,40 +24,90 @@ std::int32_t find(std::vector<std::int32_t>& parent, std::int32_t x) {
   return x;
 }
 
+/// Pairs the halfedges (corner c = 3 t + k: triangles[t][k] -> triangles[t][k + 1]) of the undirected
+/// edge lo < hi into sheets (design note) and writes each one's twin. False when their directions do
+/// not alternate by angle (or two half-planes coincide), which no solid has.
+bool pair_around_edge(const Mesh& mesh, std::int32_t lo, std::int32_t hi, const std::vector<std::int32_t>& uses,
+                      std::vector<std::int32_t>& twin) {
+  const Vec3& a = mesh.vertices[static_cast<std::size_t>(lo)];
+  const Vec3 d = (mesh.vertices[static_cast<std::size_t>(hi)] - a).normalized();
+  const Vec3 x = d.unitOrthogonal();
+  const Vec3 y = d.cross(x);
+  struct Use {
+    double angle;
+    std::int32_t corner;
+    bool forward;  // runs lo -> hi
+  };
+  std::vector<Use> around;
+  for (const std::int32_t c : uses) {
+    const Triangle& t = mesh.triangles[static_cast<std::size_t>(c / 3)];
+    const int k = c % 3;
+    const Vec3 w = mesh.vertices[static_cast<std::size_t>(t[(k + 2) % 3])] - a;  // the opposite corner
+    around.push_back({std::atan2(w.dot(y), w.dot(x)), c, t[k] == lo});
+  }
+  std::sort(around.begin(), around.end(), [](const Use& p, const Use& q) { return p.angle < q.angle; });
+  const std::size_t n = around.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Use& here = around[i];
+    const Use& below = around[(i + n - 1) % n];  // the next half-plane towards decreasing angle
+    if (here.angle == below.angle || here.forward == below.forward) return false;
+    if (!here.forward) continue;
+    twin[static_cast<std::size_t>(here.corner)] = below.corner;
+    twin[static_cast<std::size_t>(below.corner)] = here.corner;
+  }
+  return true;
+}
+
+/// The twin of every halfedge (see pair_around_edge), or an empty vector when some edge has none.
+std::vector<std::int32_t> twins(const Mesh& mesh, int& split_edges) {
+  const auto corners = static_cast<std::int32_t>(3 * mesh.triangles.size());
+  std::unordered_map<std::uint64_t, std::vector<std::int32_t>> uses;  // undirected edge -> halfedges
+  uses.reserve(static_cast<std::size_t>(corners));
+  for (std::int32_t c = 0; c < corners; ++c) {
+    const Triangle& t = mesh.triangles[static_cast<std::size_t>(c / 3)];
+    const std::int32_t p = t[c % 3], q = t[(c % 3 + 1) % 3];
+    uses[key(std::min(p, q), std::max(p, q))].push_back(c);
+  }
+  std::vector<std::int32_t> twin(static_cast<std::size_t>(corners), -1);
+  split_edges = 0;
+  for (const auto& [edge, halfedges] : uses) {
+    const auto lo = static_cast<std::int32_t>(edge >> 32), hi = static_cast<std::int32_t>(edge & 0xffffffffu);
+    if (halfedges.size() == 2) {
+      const auto first = static_cast<std::size_t>(halfedges[0]), second = static_cast<std::size_t>(halfedges[1]);
+      if (mesh.triangles[first / 3][first % 3] == mesh.triangles[second / 3][second % 3]) return {};
+      twin[first] = halfedges[1];
+      twin[second] = halfedges[0];
+      continue;
+    }
+    if (halfedges.size() % 2 != 0 || !pair_around_edge(mesh, lo, hi, halfedges, twin)) return {};
+    ++split_edges;
+  }
+  return twin;
+}
+
 }  // namespace
 
-int split_pinched_vertices(Mesh& mesh) {
-  // Corner c = 3 t + k is vertex triangles[t][k]. The corners around a vertex belong to one fan when
-  // they are linked through the edges leaving that vertex: corner (t, k) with edge v -> a, and the
-  // corner of v in the triangle holding the twin a -> v.
+PinchSplit split_pinched_vertices(Mesh& mesh) {
+  // Corner c = 3 t + k is vertex triangles[t][k] and starts halfedge triangles[t][k] -> triangles[t][k + 1].
+  // The corners around a vertex belong to one fan when they are linked through the edges leaving that
+  // vertex: corner (t, k) of v, whose triangle holds prev -> v, and the corner of v in the triangle
+  // holding that halfedge's twin v -> prev.
+  PinchSplit split;
+  const std::vector<std::int32_t> twin = twins(mesh, split.split_edges);
+  if (twin.empty()) return {};
   const auto corners = static_cast<std::int32_t>(3 * mesh.triangles.size());
-  std::unordered_map<std::uint64_t, std::int32_t> corner_of_halfedge;  // (v -> a) -> corner of v
-  corner_of_halfedge.reserve(static_cast<std::size_t>(corners));
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t)
-    for (int k = 0; k < 3; ++k)
-      corner_of_halfedge.emplace(key(mesh.triangles[t][k], mesh.triangles[t][(k + 1) % 3]),
-                                 static_cast<std::int32_t>(3 * t + k));
-
   std::vector<std::int32_t> parent(static_cast<std::size_t>(corners));
   std::iota(parent.begin(), parent.end(), 0);
-  for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t v = mesh.triangles[t][k];
-      const std::int32_t prev = mesh.triangles[t][(k + 2) % 3];
-      // The triangle across edge prev -> v holds v -> prev; its corner of v joins this fan.
-      const auto twin = corner_of_halfedge.find(key(v, prev));
-      assert(twin != corner_of_halfedge.end() && "split_pinched_vertices needs a closed mesh");
-      if (twin == corner_of_halfedge.end()) continue;
-      const std::int32_t a = find(parent, static_cast<std::int32_t>(3 * t + k));
-      const std::int32_t b = find(parent, twin->second);
-      if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-    }
+  for (std::int32_t c = 0; c < corners; ++c) {
+    const std::int32_t into = 3 * (c / 3) + (c % 3 + 2) % 3;  // halfedge prev -> v
+    const std::int32_t a = find(parent, c);
+    const std::int32_t b = find(parent, twin[static_cast<std::size_t>(into)]);
+    if (a != b) parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
   }
 
   // The first fan seen keeps the vertex; every further fan gets a copy.
   std::vector<std::int32_t> fan_of_vertex(mesh.vertices.size(), -1);
   std::unordered_map<std::int32_t, std::int32_t> copy_of_fan;
-  int added = 0;
   for (std::int32_t c = 0; c < corners; ++c) {
     std::int32_t& v = mesh.triangles[static_cast<std::size_t>(c / 3)][c % 3];
     const std::int32_t fan = find(parent, c);
@@ -65,11 +117,11 @@ int split_pinched_vertices(Mesh& mesh) {
     const auto [it, inserted] = copy_of_fan.try_emplace(fan, -1);
     if (inserted) {
       it->second = mesh.add_vertex(Vec3(mesh.vertices[static_cast<std::size_t>(v)]));
-      ++added;
+      ++split.added_vertices;
     }
     v = it->second;
   }
-  return added;
+  return split;
 }
 
 }  // namespace shatter

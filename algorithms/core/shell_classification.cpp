@@ -197,8 +197,7 @@ void judge(ShellClassification& c) {
     const int container = c.shells[static_cast<std::size_t>(s)].container;
     if (container < 0) continue;
     c.verdict = SolidVerdict::with_cavities;
-    c.reason = "solids with cavities are not supported yet: " +
-               (outward(s) ? shell_name(c, s) + " is an island in the cavity " + shell_name(c, container)
+    c.reason = (outward(s) ? shell_name(c, s) + " is an island in the cavity " + shell_name(c, container)
                            : shell_name(c, s) + " is a cavity inside " + shell_name(c, container));
     return;
   }

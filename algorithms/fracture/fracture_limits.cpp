@@ -1,18 +1,18 @@
 #include "algorithms/fracture/fracture_limits.h"
 
 #include "algorithms/core/representable_range.h"
+#include "algorithms/core/solid_check.h"
 
 #include <cmath>
 #include <string>
 
 namespace shatter {
 
-Status check_fracture_solid(const Mesh& solid, std::string_view algorithm) {
-  return check_coordinate_range(solid, std::string(algorithm) + ": solid");
+Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts) {
+  return check_solid(solid, algorithm, verdicts);
 }
 
-Status check_fracture_params(const Mesh& solid, const FractureParams& params, std::string_view algorithm,
-                             int max_fragments) {
+Status check_fracture_request(const FractureParams& params, std::string_view algorithm, int max_fragments) {
   if (params.fragments < 1 || params.fragments > max_fragments)
     return Error{std::string(algorithm) + ": fragments must be between 1 and " + std::to_string(max_fragments) +
                  ", got " + std::to_string(params.fragments)};
@@ -23,7 +23,13 @@ Status check_fracture_params(const Mesh& solid, const FractureParams& params, st
       return Error{std::string(algorithm) + ": the impact needs a point within +-1e9 m, a finite direction and "
                    "impulse and a radius in [0, 1e9] m"};
   }
-  return check_fracture_solid(solid, algorithm);
+  return {};
+}
+
+Status check_fracture_params(const Mesh& solid, const FractureParams& params, std::string_view algorithm,
+                             int max_fragments) {
+  if (Status s = check_fracture_request(params, algorithm, max_fragments); !s) return s;
+  return check_fracture_solid(solid, algorithm, params.verdicts);
 }
 
 Status check_planes(std::span<const Plane> planes) {

@@ -15,12 +15,17 @@ namespace shatter {
 /// accept fewer (voronoi_fracturer.h, cgal_clip_fracturer.h); docs/limits.md gives the time at each.
 inline constexpr int kMaxFragments = 100000;
 
-/// Error unless every vertex of `solid` is within the representable coordinate range
-/// (representable_range.h); `algorithm` names the fracturer in the message.
-Status check_fracture_solid(const Mesh& solid, std::string_view algorithm);
+/// The one input check of every fracturer: the acceptance rule (check_solid, solid_check.h), which
+/// includes the representable coordinate range; `algorithm` names the fracturer in the message.
+/// `verdicts` remembers meshes that passed (FractureParams::verdicts).
+Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts);
 
-/// check_fracture_solid, and 1 <= fragments <= `max_fragments` and an impact (if any) with a point in
-/// the coordinate range, a finite direction and impulse and a radius in [0, kMaxCoordinate].
+/// 1 <= fragments <= `max_fragments` and an impact (if any) with a point in the coordinate range, a
+/// finite direction and impulse and a radius in [0, kMaxCoordinate]: the request, not the solid.
+Status check_fracture_request(const FractureParams& params, std::string_view algorithm,
+                              int max_fragments = kMaxFragments);
+
+/// check_fracture_request, then check_fracture_solid with params.verdicts.
 Status check_fracture_params(const Mesh& solid, const FractureParams& params, std::string_view algorithm,
                              int max_fragments = kMaxFragments);
 

@@ -92,8 +92,8 @@ Result<LocalFracture> fracture_near_impact(const Fracturer& fracturer, std::span
                                            const Impact& impact, const FractureParams& params) {
   FractureParams local = params;
   local.impact = impact;
-  // The fragments' own coordinates are checked by the fracturer, one fragment at a time.
-  if (Status s = check_fracture_params(Mesh{}, local, fracturer.name()); !s) return s.error();
+  // The fragments themselves are checked by the fracturer, one fragment at a time.
+  if (Status s = check_fracture_request(local, fracturer.name()); !s) return s.error();
   LocalFracture out;
   out.hit = fragments_near_impact(fragments, impact);
   for (const int i : out.hit) {

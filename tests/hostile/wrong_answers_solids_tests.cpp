@@ -89,7 +89,7 @@ std::vector<std::pair<std::string, Mesh>> solids_with_cavities() {
 
 }  // namespace
 
-TEST_CASE("solids: a solid with cavities is refused, the reason names the cavity and its shell", "[hostile][solids]") {
+TEST_CASE("solids: a solid with cavities is accepted, the classification names the cavity and its shell", "[hostile][solids]") {
   for (const auto& [name, mesh] : solids_with_cavities()) {
     INFO(name);
     const ShellClassification c = classify_shells(mesh);
@@ -97,10 +97,9 @@ TEST_CASE("solids: a solid with cavities is refused, the reason names the cavity
     CHECK_FALSE(c.inverted);
     CHECK(c.shells[0].container == -1);
     CHECK(c.shells[1].container == 0);  // the first cavity lies in the outer shell
-    const std::string error = refusal(mesh);
-    CHECK_THAT(error, Contains("solid.off: solids with cavities are not supported yet"));
-    CHECK_THAT(error, Contains("shell 1 (") && Contains("inside shell 0 ("));
-    CHECK(error.find('\n') == std::string::npos);
+    CHECK(refusal(mesh) == "(valid)");
+    CHECK_THAT(c.reason, Contains("shell 1 (") && Contains("inside shell 0 ("));
+    CHECK(c.reason.find('\n') == std::string::npos);
   }
   // The volumes are the shells' own: an inward shell's is negative, exactly the box's.
   const ShellClassification c = classify_shells(combine({{box(2.0)}, {box(1.0), true}}));
@@ -109,7 +108,9 @@ TEST_CASE("solids: a solid with cavities is refused, the reason names the cavity
   CHECK(c.shells[1].volume == Approx(-1.0).epsilon(1e-12));
   CHECK(c.shells[1].triangles.front() == 12);
   // An island met before its cavity is named as one, with the cavity (its innermost container).
-  CHECK_THAT(refusal(combine({{box(4.0)}, {box(1.0)}, {box(2.0), true}})),
+  const Mesh island_first = combine({{box(4.0)}, {box(1.0)}, {box(2.0), true}});
+  CHECK(refusal(island_first) == "(valid)");
+  CHECK_THAT(classify_shells(island_first).reason,
              Contains("shell 1 (12 triangles from triangle 12) is an island in the cavity shell 2 (12 triangles from triangle 24)"));
 }
 
@@ -232,7 +233,7 @@ TEST_CASE("solids: a solid read inside out is flipped and accepted", "[hostile][
   const ShellClassification c = classify_shells(inside_out);
   CHECK(c.inverted);
   CHECK(c.verdict == SolidVerdict::with_cavities);
-  CHECK_THAT(refusal(inside_out), Contains("solids with cavities are not supported yet: shell 1"));
+  CHECK(refusal(inside_out) == "(valid)");  // turned outward by validate_solid
 }
 
 TEST_CASE("solids: fragments are judged by the rule every solid passes", "[hostile][solids][fracture-metrics]") {
@@ -329,7 +330,6 @@ TEST_CASE("solids: every command refuses an invalid solid with exit 2 and one li
     std::string reason;
   };
   const std::vector<File> files = {
-      {"hollow.off", combine({{sphere(1.0)}, {sphere(0.5), true}}), "solids with cavities are not supported yet"},
       {"nested.off", combine({{box(2.0)}, {box(1.0)}}), "nested shells of one orientation"},
       {"crossing.obj", combine({{box(1.0)}, {box(1.0, Vec3(0.5, 0.25, 0.125))}}), "shells cross"},
       {"mixed.off", combine({{box(1.0)}, {box(1.0, Vec3(3, 0, 0)), true}}), "shells of mixed orientation"},

@@ -91,12 +91,11 @@ void fracture_cell(const SurfaceMesh& solid, const std::vector<Plane>& planes, c
 
 Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_cells(const Mesh& solid,
                                                                    std::span<const ConvexCell> cells) const {
-  if (Status s = check_fracture_solid(solid, "cgal-clip"); !s) return s.error();
+  if (Status s = check_fracture_solid(solid, "cgal-clip", nullptr); !s) return s.error();
   if (Status s = check_reference_size(cells.size(), "cells"); !s) return s.error();
   for (std::size_t c = 0; c < cells.size(); ++c)
     if (Status s = check_planes(cells[c].planes); !s)
       return Error{"cgal-clip: cell " + std::to_string(c) + ": " + s.error().message};
-  if (Status s = check_solid(solid); !s) return s.error();
   try {
     const SurfaceMesh exact = exact_solid(solid);
     const std::array<Vec3, 2> bounds = solid_bounds(solid);

@@ -84,7 +84,6 @@ std::vector<ExactClipKernel::Piece> start_pieces(const Mesh& solid) {
 /// Runs `schedule` on the exact pieces of `solid` and converts the result; CGAL failures become errors.
 template <class Schedule>
 Result<std::vector<Fragment>> run(const Mesh& solid, Schedule&& schedule) {
-  if (Status s = check_solid(solid); !s) return s.error();
   try {
     std::vector<ExactClipKernel::Piece> pieces = schedule(ExactClipKernel{}, start_pieces(solid));
     std::vector<Fragment> fragments;
@@ -114,7 +113,7 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture(const Mesh& solid, con
 
 Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_planes(const Mesh& solid,
                                                                     std::span<const Plane> planes) const {
-  if (Status s = check_fracture_solid(solid, "cgal-clip"); !s) return s.error();
+  if (Status s = check_fracture_solid(solid, "cgal-clip", nullptr); !s) return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
   // n planes can make up to about n + 1 pieces of a convex solid, more of a non-convex one.
   if (Status s = check_reference_size(planes.size(), "planes"); !s) return s.error();

@@ -1,12 +1,14 @@
 #include "algorithms/fracture/cgal_clip/cgal_exact_mesh.h"
 
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/pinched_vertices.h"
 
-#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 
 #include <algorithm>
+#include <map>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -88,7 +90,7 @@ void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out) {
     FaceIndex face;
   };
   auto component = mesh.add_property_map<FaceIndex, std::size_t>("f:component", 0).first;
-  const std::size_t count = PMP::connected_components(mesh, component);
+  const std::size_t count = PMP::volume_connected_components(mesh, component);
   std::vector<FaceKey> keys;
   keys.reserve(mesh.number_of_faces());
   for (FaceIndex f : mesh.faces()) {
@@ -128,7 +130,9 @@ void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out) {
   }
 }
 
-SurfaceMesh exact_solid(const Mesh& solid) {
+SurfaceMesh exact_solid(const Mesh& input) {
+  Mesh solid = input;
+  split_pinched_vertices(solid);  // a Surface_mesh vertex has one fan
   SurfaceMesh mesh;
   CutMap is_cut = cut_map(mesh);
   std::vector<VertexIndex> index(solid.vertices.size(), SurfaceMesh::null_vertex());
@@ -160,36 +164,29 @@ Fragment to_fragment(Piece& piece) {
   CutMap is_cut = cut_map(mesh);
   Fragment fragment;
   Mesh& out = fragment.mesh;
+  // Exact points closer than a rounding step (a cut through a vertex's immediate neighbourhood) round
+  // to one double point: they become one vertex, and the triangles between them, which have no area
+  // in doubles, are dropped (collapsing an edge of zero length keeps the surface closed).
   std::vector<std::int32_t> index(mesh.number_of_vertices(), -1);
+  std::map<std::array<double, 3>, std::int32_t> vertex_at;
   out.vertices.reserve(mesh.number_of_vertices());
   for (VertexIndex v : mesh.vertices()) {
     const Vec3 p = rounded(mesh.point(v));
     if (!p.allFinite()) throw ClipFailure("a fragment vertex is not finite in double precision");
-    index[v] = out.add_vertex(p);
+    const auto [it, inserted] = vertex_at.try_emplace({p.x() + 0.0, p.y() + 0.0, p.z() + 0.0}, -1);
+    if (inserted) it->second = out.add_vertex(p);
+    index[v] = it->second;
   }
   out.triangles.reserve(mesh.number_of_faces());
   out.tags.reserve(mesh.number_of_faces());
   for (FaceIndex f : mesh.faces()) {
     const auto h = mesh.halfedge(f);
-    out.add_triangle(index[mesh.source(h)], index[mesh.target(h)], index[mesh.target(mesh.next(h))],
-                     is_cut[f] ? FaceTag::cut : FaceTag::surface);
+    const std::int32_t a = index[mesh.source(h)], b = index[mesh.target(h)], c = index[mesh.target(mesh.next(h))];
+    if (a == b || b == c || c == a) continue;
+    out.add_triangle(a, b, c, is_cut[f] ? FaceTag::cut : FaceTag::surface);
   }
   fragment.mass = mass_properties(out);
   return fragment;
-}
-
-Status check_solid(const Mesh& solid) {
-  if (solid.empty()) return Error{"cgal-clip: the input mesh has no triangles"};
-  if (solid.tags.size() != solid.triangles.size())
-    return Error{"cgal-clip: the input mesh has " + std::to_string(solid.tags.size()) + " tags for " +
-                 std::to_string(solid.triangles.size()) + " triangles"};
-  for (const Vec3& p : solid.vertices)
-    if (!p.allFinite()) return Error{"cgal-clip: the input mesh has a non-finite vertex"};
-  const auto vertex_count = static_cast<std::int64_t>(solid.vertices.size());
-  for (const Triangle& t : solid.triangles)
-    for (std::int32_t i : t)
-      if (i < 0 || i >= vertex_count) return Error{"cgal-clip: the input mesh has a vertex index out of range"};
-  return {};
 }
 
 }  // namespace shatter::cgal_exact

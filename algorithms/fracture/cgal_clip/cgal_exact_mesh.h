@@ -83,20 +83,20 @@ struct PieceOrder {
 /// vanishes.
 Vec3 centroid_of(const SurfaceMesh& mesh);
 
-/// Appends the connected parts of the closed mesh `mesh` as pieces, each rebuilt in a canonical order
+/// Appends the volumes of the closed mesh `mesh` (CGAL's volume_connected_components: an outer shell
+/// with the cavities inside it) as pieces, each rebuilt in a canonical order
 /// (vertices in exact lexicographic order, faces sorted by vertex ranks), so that the output does not
 /// depend on the heap addresses CGAL's corefinement breaks ties with. Triangulates polygon faces.
 void append_parts(SurfaceMesh&& mesh, std::vector<Piece>& out);
 
-/// `solid` as one exact mesh (unused vertices dropped, tags kept as "is_cut"). Throws ClipFailure when
-/// the surface is not 2-manifold or intersects itself (CGAL's clip and corefinement require neither).
+/// `solid` (a mesh that passed check_solid) as one exact mesh (unused vertices dropped, sheets meeting
+/// at a pinched vertex given their own vertex, tags kept as "is_cut"). CGAL's own self-intersection
+/// test stays as an internal assertion: it throws ClipFailure.
 SurfaceMesh exact_solid(const Mesh& solid);
 
 /// Converts one piece into a fragment: points rounded from their exact values (the same point gives
-/// the same doubles in every fragment), mass properties.
+/// the same doubles in every fragment; points that round to one double point become one vertex and
+/// the triangles between them, of no area, are dropped), mass properties.
 Fragment to_fragment(Piece& piece);
-
-/// Checks the input solid at the API boundary: non-empty, one tag per triangle, finite, indices in range.
-Status check_solid(const Mesh& solid);
 
 }  // namespace shatter::cgal_exact

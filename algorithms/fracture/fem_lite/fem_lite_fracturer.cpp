@@ -1,6 +1,5 @@
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 
-#include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/fem_lite/crack_plane_search.h"
 #include "algorithms/fracture/fem_lite/element_stress.h"
 #include "algorithms/fracture/fem_lite/fem_loads.h"
@@ -17,8 +16,6 @@ namespace shatter {
 Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params) const {
   if (Status s = check_fracture_params(solid, params, "fem-lite"); !s) return s.error();
   if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
-  // A surface that crosses itself makes cut outlines that cross: no valid partition, as for voronoi.
-  if (Status s = check_no_self_intersection(solid, "fem-lite", params.verdicts); !s) return s.error();
   FemLiteAnalysis analysis;
   if (params.fragments <= 1) {
     analysis.fragments = 1;
@@ -62,7 +59,7 @@ Result<std::vector<Plane>> FemLiteFracturer::crack_planes(const Mesh& solid, con
 Result<std::vector<Fragment>> FemLiteFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
   Result<std::vector<Plane>> planes = crack_planes(solid, params);
   if (!planes) return planes.error();
-  return PlaneSliceFracturer().fracture_by_planes(solid, *planes);
+  return PlaneSliceFracturer().fracture_by_planes(solid, *planes, kMaxFragments, params.verdicts);
 }
 
 Result<std::optional<CutPlan>> FemLiteFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {

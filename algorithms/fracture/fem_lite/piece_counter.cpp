@@ -1,7 +1,7 @@
 #include "algorithms/fracture/fem_lite/piece_counter.h"
 
 #include "algorithms/core/mass_properties.h"
-#include "algorithms/core/mesh_components.h"
+#include "algorithms/core/volume_components.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +29,7 @@ bool misses(const Aabb& box, const Plane& plane) {
 }  // namespace
 
 PieceCounter::PieceCounter(const Mesh& solid) {
-  for (Mesh& part : connected_components(Mesh(solid))) append(std::move(part));
+  for (Mesh& part : volume_components(Mesh(solid))) append(std::move(part));
 }
 
 void PieceCounter::append(Mesh&& mesh) {
@@ -44,8 +44,8 @@ int PieceCounter::add(const Plane& plane, double min_volume) {
   Mesh above;
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
     if (misses(boxes_[i], plane) || slicer_.slice(pieces_[i], plane, below, above) != SliceOutcome::cut) continue;
-    std::vector<Mesh> parts = connected_components(std::move(below));
-    for (Mesh& part : connected_components(std::move(above))) parts.push_back(std::move(part));
+    std::vector<Mesh> parts = volume_components(std::move(below));
+    for (Mesh& part : volume_components(std::move(above))) parts.push_back(std::move(part));
     if (min_volume > 0.0)
       for (const Mesh& part : parts)
         if (signed_volume(part) < min_volume) return 0;

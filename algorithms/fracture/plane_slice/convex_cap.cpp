@@ -8,6 +8,10 @@
 namespace shatter {
 namespace {
 
+/// Sine of the turn at a corner below which the corner counts as straight: far above the relative
+/// round-off of a rounded construction (1e-16), far below any turn of a tessellated surface.
+constexpr double kStraightTurn = 1e-9;
+
 /// a before b in (x, y) order.
 bool lexicographic_less(const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); }
 
@@ -47,6 +51,12 @@ bool fan_convex_cap(std::span<const Vec2> points, std::span<const CapEdge> edges
     const Vec2& b = points[static_cast<std::size_t>(loop[k])];
     const Vec2& c = points[static_cast<std::size_t>(loop[(k + 1) % n])];
     if (orient2d(a, b, c) <= 0) return false;
+    // A corner that turns by no more than round-off is a point of one straight side (three points
+    // on one line of a flat face, for example, rounded apart): a fan from a point of that side would
+    // make a sliver lying in the face, folded onto the face's own triangles. Declined: the
+    // constrained Delaunay triangulation never makes that sliver.
+    const Vec2 u = b - a, w = c - b;
+    if (u.x() * w.y() - u.y() * w.x() <= kStraightTurn * u.norm() * w.norm()) return false;
     if (lexicographic_less(b, a) && lexicographic_less(b, c)) {
       ++minima;
       first = k;

@@ -7,7 +7,9 @@
 /// exact (orient2d and coordinate comparisons on the points as given) and takes O(n): the edges form
 /// one loop, every corner turns strictly left, and the loop turns around once, which holds when the
 /// lexicographically smallest corner is the only local minimum of the cycle in that order (a loop with
-/// only left turns that winds k times has k such minima). Anything else (reflex or collinear corners,
+/// only left turns that winds k times has k such minima). Anything else (reflex, collinear or nearly
+/// straight corners, whose sine of turn is below 1e-9: points of one straight side rounded apart,
+/// where a fan would make a sliver folded onto the surface's own triangles,
 /// several loops, holes, clockwise loops, coordinates far outside 2^-400..2^400 where the predicates
 /// lose exactness) is declined, and the caller triangulates the cap with triangulate_cap.
 

@@ -1,7 +1,7 @@
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 
 #include "algorithms/core/mass_properties.h"
-#include "algorithms/core/mesh_components.h"
+#include "algorithms/core/volume_components.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
 #include "algorithms/fracture/recursive_slicing.h"
@@ -33,9 +33,9 @@ class SliceKernel {
     append_parts(std::move(upper), above);
   }
 
-  /// The connected parts of `mesh` as pieces.
+  /// The volumes of `mesh` (each an outer shell with its cavities) as pieces.
   static void append_parts(Mesh&& mesh, std::vector<Piece>& out) {
-    for (Mesh& part : connected_components(std::move(mesh))) {
+    for (Mesh& part : volume_components(std::move(mesh))) {
       MassProperties mass = mass_properties(part);
       out.push_back({std::move(part), mass});
     }
@@ -72,8 +72,9 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
 }
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
-                                                                      int max_fragments) const {
-  if (Status s = check_fracture_solid(solid, "plane-slice"); !s) return s.error();
+                                                                      int max_fragments,
+                                                                      SelfIntersectionVerdicts* verdicts) const {
+  if (Status s = check_fracture_solid(solid, "plane-slice", verdicts); !s) return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
   const SliceKernel kernel;
   auto pieces =

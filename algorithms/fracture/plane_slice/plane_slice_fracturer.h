@@ -21,9 +21,11 @@ class PlaneSliceFracturer final : public Fracturer {
   [[nodiscard]] Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
                                                         const FractureParams& params) const override;
   /// Cuts `solid` by each plane in turn (every piece a plane crosses is split); an error once the
-  /// pieces outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller).
+  /// pieces outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller). `verdicts`
+  /// as FractureParams::verdicts.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
-                                                                 int max_fragments = kMaxFragments) const;
+                                                                 int max_fragments = kMaxFragments,
+                                                                 SelfIntersectionVerdicts* verdicts = nullptr) const;
 };
 
 /// Registers "plane-slice" (no settings).

@@ -18,9 +18,8 @@
 #include "algorithms/fracture/voronoi/voronoi_fracturer.h"
 
 #include "algorithms/core/mass_properties.h"
-#include "algorithms/core/mesh_components.h"
+#include "algorithms/core/volume_components.h"
 #include "algorithms/core/representable_range.h"
-#include "algorithms/core/self_intersection.h"
 #include "algorithms/fracture/fracture_limits.h"
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
 #include "algorithms/fracture/voronoi/cell_clipper.h"
@@ -159,7 +158,7 @@ class CellCutter {
           break;
       }
     }
-    std::vector<Mesh> parts = current == &piece ? connected_components(piece) : connected_components(std::move(owned));
+    std::vector<Mesh> parts = current == &piece ? volume_components(piece) : volume_components(std::move(owned));
     for (Mesh& part : parts) {
       const MassProperties mass = mass_properties(part);
       parts_[static_cast<std::size_t>(i)].push_back({std::move(part), mass});
@@ -174,7 +173,7 @@ class CellCutter {
     bool ok = true;
     Mesh part_below;
     Mesh part_above;
-    for (const Mesh& part : connected_components(piece)) {
+    for (const Mesh& part : volume_components(piece)) {
       const Mesh* kept = &part;
       switch (slicer_.slice(part, plane, part_below, part_above)) {
         case SliceOutcome::cut: kept = &part_below; break;
@@ -241,8 +240,6 @@ Status check_settings(const VoronoiSettings& s) {
 Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
   if (Status s = check_fracture_params(solid, params, "voronoi"); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
-  if (Status s = check_no_self_intersection(solid, "voronoi", params.verdicts); !s) return s.error();
-  if (solid.empty()) return std::vector<Fragment>{};
   const PointInMesh inside(solid);
   Result<std::vector<Vec3>> sites = sample_sites(inside, params, settings_.sites);
   if (!sites) return sites.error();
@@ -252,11 +249,9 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, cons
 
 Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& solid,
                                                                     std::span<const Vec3> sites) const {
-  if (Status s = check_fracture_solid(solid, "voronoi"); !s) return s.error();
+  if (Status s = check_fracture_solid(solid, "voronoi", nullptr); !s) return s.error();
   if (Status s = check_sites(sites); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
-  if (Status s = check_no_self_intersection(solid, "voronoi", nullptr); !s) return s.error();
-  if (solid.empty()) return std::vector<Fragment>{};
   return cut_cells(solid, sites, nullptr);
 }
 
@@ -284,7 +279,7 @@ std::vector<Fragment> VoronoiFracturer::cut_cells(const Mesh& solid, std::span<c
       continue;
     }
     if (cell.empty()) continue;
-    for (Mesh& part : connected_components(std::move(cell))) {
+    for (Mesh& part : volume_components(std::move(cell))) {
       const MassProperties mass = mass_properties(part);
       parts[static_cast<std::size_t>(i)].push_back({std::move(part), mass});
     }

@@ -54,6 +54,7 @@ Status fracture_phase(RunState& run, RuntimeEvent& e) {
   FractureParams params;
   params.fragments = run.runtime_fragments;
   params.impact = *e.impact;
+  params.verdicts = run.options.verdicts;  // a fragment broken again in a later repetition is not re-checked
   const std::size_t k = e.pieces.size();
   params.seed = runtime_seed(run.result, e.index, k);
   const Fragment& target = run.result.fragments[static_cast<std::size_t>(e.hit_fragments[k])];

@@ -87,10 +87,16 @@ TEST_CASE("validation: bad meshes get messages naming the culprit", "[validation
   CHECK_THAT(error_of(box), Contains("inconsistent orientation at edge ("));
 }
 
-TEST_CASE("validation: a pinched edge is not 2-manifold", "[validation]") {
+TEST_CASE("validation: a pinched edge is split into two sheets", "[validation]") {
   Mesh mesh = two_tetrahedra_on_one_edge();
   CHECK(signed_volume(mesh) == Approx(1.0 / 3.0));
   CHECK(!is_closed_and_oriented(mesh));
+  CHECK(error_of(mesh) == "(no error)");
+}
+
+TEST_CASE("validation: an edge used by four triangles, three of them one way, is not 2-manifold", "[validation]") {
+  Mesh mesh = two_tetrahedra_on_one_edge();
+  mesh.triangles[4] = {0, 1, 4};  // now three triangles run 0 -> 1
   CHECK_THAT(error_of(mesh), Contains("not 2-manifold: edge (0, 1) is used by 4 triangles"));
 }
 
