@@ -8,9 +8,9 @@
 
 namespace shatter::repair {
 
-/// Why `mesh` is not a solid the fracturers accept, or nothing: the acceptance rule (validate_solid,
-/// on a copy) with cavities allowed (inward shells nested inside outward ones, shell_classification.h),
-/// and no self-intersection (find_self_intersection).
+/// Why `mesh` is not a solid the fracturers accept, or nothing: the acceptance rule (validate_solid on
+/// a copy: check_solid after normalising, so cavities allowed and self-intersections refused), and the
+/// mesh facing outward as it is.
 std::optional<std::string> solid_defect(const Mesh& mesh);
 
 }  // namespace shatter::repair

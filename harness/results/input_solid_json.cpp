@@ -7,10 +7,13 @@ nlohmann::ordered_json repairs_json(const Solid& solid) {
   const ValidationReport& v = solid.report;
   // Welding duplicate positions is the one repair that the acceptance rule's own normalisation also
   // does (a UV seam): both count as merged vertices.
-  return {{"repaired", r.repaired || v.merged_duplicate_vertices > 0 || v.flipped},
+  return {{"repaired", r.repaired || v.merged_duplicate_vertices > 0 || v.flipped || v.split_pinched_vertices > 0 ||
+                           v.split_non_manifold_edges > 0},
           {"vertices_merged", r.vertices_merged + v.merged_duplicate_vertices},
           {"faces_removed", r.faces_removed},
           {"faces_reoriented", r.faces_reoriented},
+          {"vertices_split", v.split_pinched_vertices},
+          {"edges_split", v.split_non_manifold_edges},
           {"flipped", v.flipped},
           {"holes_filled", r.holes_filled},
           {"hole_area", r.hole_area},

@@ -322,7 +322,7 @@ TEST_CASE("results: a fracture whose figures break a threshold fails that check,
   CHECK(failed_cell_checks(cell).empty());
 }
 
-TEST_CASE("solids: every command refuses an invalid solid with exit 2 and one line", "[hostile][solids][cli]") {
+TEST_CASE("solids: with --no-repair every command refuses an invalid solid with exit 2 and one line", "[hostile][solids][cli]") {
   const auto dir = scratch("cli");
   struct File {
     std::string name;
@@ -348,13 +348,15 @@ TEST_CASE("solids: every command refuses an invalid solid with exit 2 and one li
     const std::filesystem::path case_path = dir / (path.stem().string() + ".json");
     std::ofstream(case_path) << c.dump(1);
     const std::filesystem::path out = dir / "out";
+    // The acceptance rule's refusal, as every command gives it when repair is off (by default the
+    // same files are repaired: the next test case).
     const std::vector<std::vector<std::string>> commands = {
-        {"fracture", "--mesh", path.string(), "--algo", "plane-slice", "--fragments", "4"},
-        {"fracture", "--mesh", path.string(), "--algo", "cgal-clip", "--fragments", "4", "--out", out.string()},
-        {"table", "--mesh", path.string(), "--fragments", "4", "--repetitions", "1"},
-        {"stress", "--case", case_path.string()},
-        {"grid", "--case", case_path.string(), "--repetitions", "1", "--frames", "2", "--json", (dir / "g.json").string()},
-        {"accuracy", "--case", case_path.string(), "--family", "fracture", "--repetitions", "1"},
+        {"fracture", "--mesh", path.string(), "--algo", "plane-slice", "--fragments", "4", "--no-repair"},
+        {"fracture", "--mesh", path.string(), "--algo", "cgal-clip", "--fragments", "4", "--out", out.string(), "--no-repair"},
+        {"table", "--mesh", path.string(), "--fragments", "4", "--repetitions", "1", "--no-repair"},
+        {"stress", "--case", case_path.string(), "--no-repair"},
+        {"grid", "--case", case_path.string(), "--repetitions", "1", "--frames", "2", "--json", (dir / "g.json").string(), "--no-repair"},
+        {"accuracy", "--case", case_path.string(), "--family", "fracture", "--repetitions", "1", "--no-repair"},
     };
     for (const std::vector<std::string>& args : commands) {
       INFO(f.name << ": " << args[0] << " " << args[1] << " " << args[2]);
@@ -391,4 +393,45 @@ TEST_CASE("solids: the CLI fractures disjoint shells and a flipped solid, and ch
   CHECK(table.exit_code == 0);
   CHECK(table.err.empty());
   CHECK(table.out.find("| NO |") == std::string::npos);
+}
+
+TEST_CASE("solids: by default every command repairs the invalid arrangements into the solid they describe",
+          "[hostile][solids][cli][repair]") {
+  const auto dir = scratch("cli_repaired");
+  struct File {
+    std::string name;
+    Mesh mesh;
+    double volume;  // analytic, of the solid the shells describe
+    int cavities;
+  };
+  // Nested outward boxes: the inner one turned into a cavity, 8 - 1. Crossing unit boxes: their union,
+  // 2 - 0.5 x 0.75 x 0.875. A box beside an inward box: both outward, 1 + 1. A hollow sphere is a solid
+  // as it is: outer minus inner polyhedron.
+  const Mesh hollow = combine({{sphere(1.0)}, {sphere(0.5), true}});
+  const std::vector<File> files = {
+      {"nested.off", combine({{box(2.0)}, {box(1.0)}}), 7.0, 1},
+      {"crossing.obj", combine({{box(1.0)}, {box(1.0, Vec3(0.5, 0.25, 0.125))}}), 2.0 - 0.5 * 0.75 * 0.875, 0},
+      {"mixed.off", combine({{box(1.0)}, {box(1.0, Vec3(3, 0, 0)), true}}), 2.0, 0},
+      {"hollow.off", hollow, mass_properties(hollow).volume, 1},
+  };
+  for (const File& f : files) {
+    const std::filesystem::path path = dir / f.name;
+    if (path.extension() == ".obj")
+      REQUIRE(write_obj(f.mesh, path).ok());
+    else
+      write_mesh(f.mesh, path);
+    for (const std::string algo : {"plane-slice", "voronoi", "fem-lite", "cgal-clip"}) {
+      INFO(f.name << " with " << algo);
+      const test::CliRun run = test::run_cli_argv({"fracture", "--mesh", path.string(), "--algo", algo, "--fragments", "6"});
+      INFO(run.err);
+      REQUIRE(run.exit_code == 0);
+      const nlohmann::json out = nlohmann::json::parse(run.out);
+      CHECK(out["input"]["volume"].get<double>() == Approx(f.volume).epsilon(1e-9));
+      CHECK(out["input"]["repairs"]["cavities"].get<int>() == f.cavities);
+      CHECK(out["input"]["repairs"]["repaired"].get<bool>() == (f.name != "hollow.off"));
+      CHECK(out["metrics"]["all_closed"].get<bool>());
+      CHECK(out["metrics"]["volume_error"].get<double>() <= 1e-9);
+      CHECK(out["metrics"]["partition_error"].get<double>() == 0.0);
+    }
+  }
 }

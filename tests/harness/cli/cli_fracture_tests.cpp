@@ -84,11 +84,17 @@ TEST_CASE("cli: bad input exits 2 with one line and no output files", "[cli]") {
   const fs::path out = dir / "frags";
   const std::string out_flag = " --out " + out.string();
 
-  SECTION("a non-closed mesh") {
+  SECTION("a non-closed mesh under --no-repair") {
     if (!test::have_meshes()) return;
     require_bad_input(test::run_cli("fracture --mesh " + (test::mesh_dir() / "mushroom.off").string() +
-                                    " --fragments 5" + out_flag),
+                                    " --fragments 5 --no-repair" + out_flag),
                       "not closed");
+  }
+  SECTION("an open sheet, which no repair makes a solid") {
+    if (!test::have_meshes()) return;
+    require_bad_input(test::run_cli("fracture --mesh " + (test::mesh_dir() / "quad.off").string() +
+                                    " --fragments 5" + out_flag),
+                      "quad.off");
   }
   SECTION("a truncated file") {
     REQUIRE(write_off(make_sphere(1.0, 16, 8), dir / "whole.off").ok());
@@ -133,15 +139,15 @@ TEST_CASE("cli: bad input exits 2 with one line and no output files", "[cli]") {
   for (const auto& e : fs::directory_iterator(dir)) CHECK(e.path().filename().string().rfind(".frags", 0) != 0);
 }
 
-TEST_CASE("cli: a self-intersecting mesh refused by voronoi names the file, exit 2, nothing written", "[cli]") {
+TEST_CASE("cli: a self-intersecting mesh is refused under --no-repair by every fracturer, and repaired without it", "[cli]") {
   if (!test::have_meshes()) return;
   const auto cow = test::mesh_dir() / "cow.off";
   REQUIRE(std::filesystem::exists(cow));
   const auto out = std::filesystem::temp_directory_path() / "shatter_cli_cow_out";
   std::filesystem::remove_all(out);
-  for (const char* algo : {"voronoi", "fem-lite", "cgal-clip"}) {
+  for (const char* algo : {"plane-slice", "voronoi", "fem-lite", "cgal-clip"}) {
     const auto r = shatter::test::run_cli(std::string("fracture --mesh ") + cow.string() + " --algo " + algo +
-                                          " --fragments 5 --out " + out.string());
+                                          " --fragments 5 --no-repair --out " + out.string());
     INFO(algo << ": " << r.err);
     CHECK(r.exit_code == 2);
     CHECK(shatter::test::line_count(r.err) == 1);
@@ -149,4 +155,11 @@ TEST_CASE("cli: a self-intersecting mesh refused by voronoi names the file, exit
     CHECK(r.err.find("intersect") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(out));
   }
+  const auto repaired = shatter::test::run_cli(std::string("fracture --mesh ") + cow.string() + " --algo voronoi --fragments 5");
+  INFO(repaired.err);
+  REQUIRE(repaired.exit_code == 0);
+  const auto j = nlohmann::json::parse(repaired.out);
+  CHECK(j.at("input").at("repairs").at("self_intersections").get<int>() > 0);
+  CHECK(j.at("input").at("repairs").at("self_intersection_fix") != "");
+  CHECK(j.at("metrics").at("all_closed").get<bool>());
 }
