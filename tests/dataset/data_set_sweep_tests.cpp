@@ -20,6 +20,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -182,7 +183,12 @@ TEST_CASE("data set: the sweep table", "[.data-set-table]") {
     Result<Solid> solid = load_solid(path);
     if (!solid) {
       std::string reason = solid.error().message;
-      if (reason.rfind(path.string(), 0) == 0) reason = reason.substr(path.string().size() + 2);
+      // "<path>: why" or "<path>:<line>: why" -> "why" or "line <line>: why".
+      if (reason.rfind(path.string() + ":", 0) == 0) {
+        reason = reason.substr(path.string().size() + 1);
+        if (!reason.empty() && reason[0] == ' ') reason = reason.substr(1);
+        else if (!reason.empty() && std::isdigit(static_cast<unsigned char>(reason[0]))) reason = "line " + reason;
+      }
       table << "| " << file << " | | refused: " << reason << " | |";
       for (std::size_t k = 0; k < names.size(); ++k) table << " |";
       table << '\n';
