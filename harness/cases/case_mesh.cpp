@@ -219,21 +219,4 @@ Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what) {
   return mesh;
 }
 
-void refuse_repair(Case& c) {
-  if (auto* file = std::get_if<MeshFileSpec>(&c.mesh)) file->repair = false;
-}
-
-Result<Solid> build_case_solid(const Case& c) {
-  const std::string what = fmt::format("{}: mesh", c.source.empty() ? c.name : c.source.string());
-  Result<Mesh> mesh = build_case_mesh(c.mesh, what);
-  if (!mesh) return mesh.error();
-  const std::string name = std::holds_alternative<MeshFileSpec>(c.mesh)
-                               ? fmt::format("{} ({})", what, std::get<MeshFileSpec>(c.mesh).path.string())
-                               : what;
-  const SolidRepair repair = std::holds_alternative<MeshFileSpec>(c.mesh) && !std::get<MeshFileSpec>(c.mesh).repair
-                                 ? SolidRepair::refuse
-                                 : SolidRepair::repair;
-  return make_solid(std::move(mesh).value(), name, repair);
-}
-
 }  // namespace shatter
