@@ -93,8 +93,9 @@ Result<ValidationReport> validate_solid(Mesh& mesh, const std::string& what) {
   if (is_closed_and_oriented(mesh)) {
     const ShellClassification shells = classify_shells(mesh);
     report.shells = static_cast<int>(shells.shells.size());
+    // A cavity faces inward once the mesh faces outward (after the flip below, when inverted).
     report.cavities = static_cast<int>(std::count_if(shells.shells.begin(), shells.shells.end(),
-                                                     [](const Shell& s) { return s.container >= 0; }));
+                                                     [&](const Shell& s) { return s.outward() == shells.inverted; }));
     if (shells.inverted) {
       for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
       report.flipped = true;

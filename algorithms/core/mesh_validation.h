@@ -16,7 +16,7 @@ struct ValidationReport {
   int split_pinched_vertices = 0;  ///< copies made so that sheets meeting at one vertex or edge each have their own
   int split_non_manifold_edges = 0;  ///< edges used by 2k > 2 triangles, separated into k manifold sheets
   int shells = 1;                  ///< connected closed shells (outer shells, cavities and islands in them)
-  int cavities = 0;                ///< shells inside another shell (cavities, and islands inside cavities)
+  int cavities = 0;                ///< inward shells inside another shell, the cavities (islands in them not counted)
 };
 
 /// Normalises `mesh` in place and then applies the acceptance rule (check_solid, solid_check.h) to

@@ -2,9 +2,6 @@
 
 #include "algorithms/core/mesh_io.h"
 #include "algorithms/core/representable_range.h"
-#include "algorithms/core/shell_classification.h"
-
-#include <algorithm>
 
 #include <utility>
 
@@ -37,12 +34,6 @@ Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair)
   solid.report = as_given->second;
   solid.mass = mass_properties(solid.mesh);
   solid.area = surface_area(solid.mesh);
-  solid.shells = solid.report.shells;
-  if (solid.shells > 1) {  // one shell is never a cavity
-    const ShellClassification shells = classify_shells(solid.mesh);
-    solid.cavities = static_cast<int>(
-        std::count_if(shells.shells.begin(), shells.shells.end(), [](const Shell& s) { return !s.outward(); }));
-  }
   return solid;
 }
 

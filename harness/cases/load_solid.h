@@ -25,8 +25,6 @@ struct Solid {
   double area = 0.0;          ///< surface area, m^2 (every tag)
   ValidationReport report;    ///< what validation normalised
   RepairReport repair;        ///< what repair changed (all zero when the mesh was a solid)
-  int shells = 1;             ///< closed shells of `mesh`
-  int cavities = 0;           ///< of those, inward shells inside another (the cavities)
 };
 
 /// Reads `path` (.off or .obj), repairs it per `repair`, validates it as a solid and measures it.

@@ -20,8 +20,8 @@ nlohmann::ordered_json repairs_json(const Solid& solid) {
           {"self_intersections", r.self_intersections},
           {"self_intersection_fix", r.self_intersection_fix},
           {"sheets_removed", r.sheets_removed},
-          {"shells", solid.shells},
-          {"cavities", solid.cavities},
+          {"shells", v.shells},
+          {"cavities", v.cavities},
           {"hausdorff_distance", r.hausdorff_distance},
           {"time_ms", r.time_ms}};
 }

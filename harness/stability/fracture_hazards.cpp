@@ -1,6 +1,7 @@
 #include "harness/stability/fracture_hazards.h"
 
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_assembly.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
@@ -43,32 +44,10 @@ Mesh scaled(Mesh m, double factor, const Vec3& offset = Vec3::Zero()) {
   return m;
 }
 
-Mesh inverted(Mesh m) {
-  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
-  return m;
-}
-
-/// Every triangle with its own three vertices (a triangle soup of the same solid).
-Mesh soup(const Mesh& m) {
-  Mesh out;
-  for (std::size_t i = 0; i < m.triangles.size(); ++i) {
-    const Triangle& t = m.triangles[i];
-    const std::int32_t a = out.add_vertex(m.vertices[static_cast<std::size_t>(t[0])]);
-    const std::int32_t b = out.add_vertex(m.vertices[static_cast<std::size_t>(t[1])]);
-    const std::int32_t c = out.add_vertex(m.vertices[static_cast<std::size_t>(t[2])]);
-    out.add_triangle(a, b, c, m.tags[i]);
-  }
-  return out;
-}
-
 /// Two unit cubes touching at one corner, the origin: closed, but pinched there.
 Mesh pinched_cubes() {
   Mesh a = make_box(Vec3(1, 1, 1), Vec3(-0.5, -0.5, -0.5));
-  const Mesh b = make_box(Vec3(1, 1, 1), Vec3(0.5, 0.5, 0.5));
-  const auto offset = static_cast<std::int32_t>(a.vertices.size());
-  a.vertices.insert(a.vertices.end(), b.vertices.begin(), b.vertices.end());
-  for (std::size_t i = 0; i < b.triangles.size(); ++i)
-    a.add_triangle(b.triangles[i][0] + offset, b.triangles[i][1] + offset, b.triangles[i][2] + offset, b.tags[i]);
+  append_mesh(a, make_box(Vec3(1, 1, 1), Vec3(0.5, 0.5, 0.5)));
   return a;
 }
 
@@ -170,8 +149,8 @@ std::vector<FractureHazard> fracture_hazards(bool quick) {
   FractureHazard again = hazard("refracture", "cube into 8 fragments, each fractured into 8 again", cube, {});
   again.refracture = true;
   out.push_back(std::move(again));
-  out.push_back(hazard("inverted-orientation", "cube with every triangle reversed", inverted(cube), {}));
-  out.push_back(hazard("duplicated-vertices", "cube as a triangle soup (36 vertices)", soup(cube), {}));
+  out.push_back(hazard("inverted-orientation", "cube with every triangle reversed", reversed_mesh(cube), {}));
+  out.push_back(hazard("duplicated-vertices", "cube as a triangle soup (36 vertices)", triangle_soup(cube), {}));
   out.push_back(hazard("pinched-vertex", "two cubes sharing one corner (non-manifold vertex)", pinched_cubes(), {}));
   return out;
 }

@@ -204,7 +204,7 @@ TEST_CASE("data set: the sweep table", "[.data-set-table]") {
     if (r.holes_filled) did.push_back(fmt::format("{} holes filled", r.holes_filled));
     if (r.self_intersections) did.push_back(fmt::format("{} intersecting pairs ({})", r.self_intersections, r.self_intersection_fix));
     if (r.sheets_removed) did.push_back(fmt::format("{} sheets removed", r.sheets_removed));
-    if (solid->cavities) did.push_back(fmt::format("{} cavities", solid->cavities));
+    if (solid->report.cavities) did.push_back(fmt::format("{} cavities", solid->report.cavities));
     std::string repairs;
     for (const std::string& d : did) repairs += (repairs.empty() ? "" : ", ") + d;
     const double diagonal = bounding_box(solid->mesh).diagonal();

@@ -71,8 +71,9 @@ std::filesystem::path scratch(const std::string& name) {
   return dir;
 }
 
+/// Writes `mesh` as OBJ when `path` ends in .obj, else as OFF; returns the path.
 std::string write_mesh(const Mesh& mesh, const std::filesystem::path& path) {
-  REQUIRE(write_off(mesh, path).ok());
+  REQUIRE((path.extension() == ".obj" ? write_obj(mesh, path) : write_off(mesh, path)).ok());
   return path.string();
 }
 
@@ -338,10 +339,7 @@ TEST_CASE("solids: with --no-repair every command refuses an invalid solid with 
   std::ifstream(std::filesystem::path(SHATTER_SOURCE_DIR) / "cases" / "wall.json") >> base;
   for (const File& f : files) {
     const std::filesystem::path path = dir / f.name;
-    if (path.extension() == ".obj")
-      REQUIRE(write_obj(f.mesh, path).ok());
-    else
-      write_mesh(f.mesh, path);
+    write_mesh(f.mesh, path);
     nlohmann::json c = base;
     c["name"] = "hostile-" + path.stem().string();
     c["mesh"] = {{"file", path.string()}};
@@ -416,10 +414,7 @@ TEST_CASE("solids: by default every command repairs the invalid arrangements int
   };
   for (const File& f : files) {
     const std::filesystem::path path = dir / f.name;
-    if (path.extension() == ".obj")
-      REQUIRE(write_obj(f.mesh, path).ok());
-    else
-      write_mesh(f.mesh, path);
+    write_mesh(f.mesh, path);
     for (const std::string algo : {"plane-slice", "voronoi", "fem-lite", "cgal-clip"}) {
       INFO(f.name << " with " << algo);
       const test::CliRun run = test::run_cli_argv({"fracture", "--mesh", path.string(), "--algo", algo, "--fragments", "6"});

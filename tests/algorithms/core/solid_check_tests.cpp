@@ -3,6 +3,7 @@
 // line each), and the normalisation validate_solid does before applying it (pinched edges split).
 
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_assembly.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
 #include "algorithms/core/self_intersection.h"
@@ -38,18 +39,9 @@ bool meet(const Corners& t, const Corners& u) {
 }
 
 /// Two meshes as one (indices of `b` shifted).
-Mesh combined(const Mesh& a, const Mesh& b) {
-  Mesh m = a;
-  const auto offset = static_cast<std::int32_t>(m.vertices.size());
-  for (const Vec3& v : b.vertices) m.add_vertex(v);
-  for (std::size_t f = 0; f < b.triangles.size(); ++f)
-    m.add_triangle(b.triangles[f][0] + offset, b.triangles[f][1] + offset, b.triangles[f][2] + offset, b.tags[f]);
-  return m;
-}
-
-Mesh reversed(Mesh m) {
-  for (Triangle& t : m.triangles) std::swap(t[1], t[2]);
-  return m;
+Mesh combined(Mesh a, const Mesh& b) {
+  append_mesh(a, b);
+  return a;
 }
 
 /// The error line of check_solid, or "(accepted)".
@@ -120,11 +112,11 @@ TEST_CASE("acceptance: one error line for each failure class", "[acceptance]") {
     CHECK(verdict(two_tetrahedra_on_one_edge()) == "solid: not 2-manifold: edge (0, 1) is used by 4 triangles");
   }
   SECTION("inward, flat, crossing and nested shells") {
-    CHECK_THAT(verdict(reversed(cube)), StartsWith("solid: faces inward"));
+    CHECK_THAT(verdict(reversed_mesh(cube)), StartsWith("solid: faces inward"));
     CHECK_THAT(verdict(mesh_of({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {{0, 1, 2}, {0, 2, 1}})), Contains("zero volume"));
     CHECK_THAT(verdict(combined(cube, make_box(Vec3(1, 1, 1), Vec3(0.5, 0.5, 0.5)))), Contains("shells cross"));
     CHECK_THAT(verdict(combined(make_box(Vec3(2, 2, 2)), cube)), Contains("nested shells of one orientation"));
-    CHECK_THAT(verdict(combined(cube, reversed(make_box(Vec3(1, 1, 1), Vec3(3, 0, 0))))),
+    CHECK_THAT(verdict(combined(cube, reversed_mesh(make_box(Vec3(1, 1, 1), Vec3(3, 0, 0))))),
                Contains("shells of mixed orientation"));
   }
   SECTION("a surface that intersects itself") {
@@ -135,7 +127,7 @@ TEST_CASE("acceptance: one error line for each failure class", "[acceptance]") {
     CHECK_THAT(verdict(m), StartsWith("solid: the input mesh intersects itself (triangles "));
   }
   SECTION("a cavity is a solid") {
-    CHECK(verdict(combined(make_box(Vec3(2, 2, 2)), reversed(cube))) == "(accepted)");
+    CHECK(verdict(combined(make_box(Vec3(2, 2, 2)), reversed_mesh(cube))) == "(accepted)");
   }
 }
 
@@ -177,7 +169,7 @@ TEST_CASE("acceptance: validate_solid splits an edge shared by two volumes", "[a
 }
 
 TEST_CASE("acceptance: validate_solid accepts a solid with a cavity", "[acceptance][validation]") {
-  Mesh hollow = combined(make_box(Vec3(2, 2, 2)), reversed(make_box(Vec3(1, 1, 1))));
+  Mesh hollow = combined(make_box(Vec3(2, 2, 2)), reversed_mesh(make_box(Vec3(1, 1, 1))));
   const Result<ValidationReport> report = validate_solid(hollow, "hollow");
   REQUIRE(report.ok());
   CHECK(report->shells == 2);

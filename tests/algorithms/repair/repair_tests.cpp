@@ -1,4 +1,5 @@
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_assembly.h"
 #include "algorithms/core/mesh_io.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
@@ -58,29 +59,8 @@ Mesh without(const Mesh& mesh, Predicate drop) {
 
 /// `b` appended to `a` as one soup.
 Mesh soup_of(Mesh a, const Mesh& b) {
-  const auto offset = static_cast<std::int32_t>(a.vertices.size());
-  for (const Vec3& p : b.vertices) a.add_vertex(p);
-  for (std::size_t f = 0; f < b.triangles.size(); ++f)
-    a.add_triangle(b.triangles[f][0] + offset, b.triangles[f][1] + offset, b.triangles[f][2] + offset, b.tags[f]);
+  append_mesh(a, b);
   return a;
-}
-
-Mesh reversed(Mesh mesh) {
-  for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
-  return mesh;
-}
-
-/// Every triangle gets its own three vertices: a soup without any shared vertex.
-Mesh unshared(const Mesh& mesh) {
-  Mesh out;
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    const Triangle& t = mesh.triangles[f];
-    const std::int32_t a = out.add_vertex(mesh.vertices[t[0]]);
-    const std::int32_t b = out.add_vertex(mesh.vertices[t[1]]);
-    const std::int32_t c = out.add_vertex(mesh.vertices[t[2]]);
-    out.add_triangle(a, b, c, mesh.tags[f]);
-  }
-  return out;
 }
 
 RepairedSolid repaired(const Mesh& soup) {
@@ -132,7 +112,7 @@ TEST_CASE("repair: two overlapping unit cubes in one soup become their union", "
 
 TEST_CASE("repair: shells of mixed orientation are oriented to bound a volume with a cavity", "[repair]") {
   // Outer box 2^3 wholly inward; inner box 1^3 with every other triangle reversed.
-  const Mesh outer = reversed(make_box(Vec3::Constant(2.0)));
+  const Mesh outer = reversed_mesh(make_box(Vec3::Constant(2.0)));
   Mesh inner = make_box(Vec3::Ones());
   for (std::size_t f = 0; f < inner.triangles.size(); f += 2) std::swap(inner.triangles[f][1], inner.triangles[f][2]);
   const RepairedSolid solid = repaired(soup_of(outer, inner));
@@ -178,7 +158,7 @@ TEST_CASE("repair: a shallow open patch is a sheet, a deep bowl a solid with a h
 
 TEST_CASE("repair: a box whose faces each have their own vertices is welded", "[repair]") {
   const Mesh box = make_box(Vec3(1.0, 2.0, 3.0));
-  Mesh seams = unshared(box);
+  Mesh seams = triangle_soup(box);
   // Tags survive: mark the first two triangles as cut faces.
   seams.tags[0] = seams.tags[1] = FaceTag::cut;
   const double cut_area = tagged_area(seams, FaceTag::cut);
@@ -215,7 +195,7 @@ TEST_CASE("repair: a sphere with random face orientations is oriented outward", 
 
 TEST_CASE("repair: an inside-out sphere is turned outward with Hausdorff distance 0", "[repair]") {
   const Mesh sphere = make_sphere(2.0);
-  const RepairedSolid solid = repaired(reversed(sphere));
+  const RepairedSolid solid = repaired(reversed_mesh(sphere));
   require_solid(solid.mesh);
   CHECK(solid.report.faces_reoriented == static_cast<int>(sphere.triangles.size()));
   CHECK(signed_volume(solid.mesh) == Approx(signed_volume(sphere)).epsilon(1e-12));
