@@ -29,14 +29,6 @@ struct TriangulateTagVisitor {
   void after_subface_creations() {}
 };
 
-/// Rounded position of an exact point from its interval approximation (accurate to round-off; cheap).
-/// The interval tightens once CGAL has needed the exact value, so this depends on what was computed
-/// before; the order of computation is fixed, so it is still deterministic.
-Vec3 approximate(const ExactPoint& p) {
-  const auto& a = p.approx();
-  return {CGAL::to_double(a.x()), CGAL::to_double(a.y()), CGAL::to_double(a.z())};
-}
-
 /// Position of an exact point rounded from its exact value.
 Vec3 rounded(const ExactPoint& p) {
   const auto& e = CGAL::exact(p);
@@ -45,16 +37,20 @@ Vec3 rounded(const ExactPoint& p) {
 
 }  // namespace
 
+// The centroid (the next cut plane's point) is computed from exactly rounded positions, not from the
+// points' interval approximations: an interval tightens whenever CGAL happens to need the exact value,
+// and builds with CGAL's assertions on need it more often, so cut planes taken from the intervals
+// differed between builds.
 Vec3 centroid_of(const SurfaceMesh& mesh) {
   Vec3 moment = Vec3::Zero();
   double six_volume = 0.0;
   for (FaceIndex f : mesh.faces()) {
     auto h = mesh.halfedge(f);
-    const Vec3 a = approximate(mesh.point(mesh.target(h)));
+    const Vec3 a = rounded(mesh.point(mesh.target(h)));
     // Fan over the face's corners, in case a face is not a triangle.
     for (auto g = mesh.next(h); mesh.target(mesh.next(g)) != mesh.target(h); g = mesh.next(g)) {
-      const Vec3 b = approximate(mesh.point(mesh.target(g)));
-      const Vec3 c = approximate(mesh.point(mesh.target(mesh.next(g))));
+      const Vec3 b = rounded(mesh.point(mesh.target(g)));
+      const Vec3 c = rounded(mesh.point(mesh.target(mesh.next(g))));
       const double v = a.dot(b.cross(c));
       six_volume += v;
       moment += v * (a + b + c);
@@ -62,7 +58,7 @@ Vec3 centroid_of(const SurfaceMesh& mesh) {
   }
   if (six_volume > 0.0 && std::isfinite(six_volume)) return moment / (4.0 * six_volume);
   Vec3 mean = Vec3::Zero();
-  for (VertexIndex v : mesh.vertices()) mean += approximate(mesh.point(v));
+  for (VertexIndex v : mesh.vertices()) mean += rounded(mesh.point(v));
   return mesh.number_of_vertices() > 0 ? Vec3(mean / static_cast<double>(mesh.number_of_vertices())) : mean;
 }
 

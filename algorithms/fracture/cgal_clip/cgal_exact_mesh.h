@@ -79,8 +79,8 @@ struct PieceOrder {
   [[nodiscard]] Vec3 centroid(const Piece& piece) const { return piece.centroid; }
 };
 
-/// Volume centroid of `mesh` by the divergence theorem in double; the vertex mean when the volume
-/// vanishes.
+/// Volume centroid of `mesh` by the divergence theorem in double, from exactly rounded positions (the
+/// same in every build); the vertex mean when the volume vanishes.
 Vec3 centroid_of(const SurfaceMesh& mesh);
 
 /// Appends the volumes of the closed mesh `mesh` (CGAL's volume_connected_components: an outer shell
