@@ -6,10 +6,13 @@
 /// cut faces only, and renderers texture the two differently. Faces that mesh repair added to close an
 /// input (algorithms/repair/) carry a third tag, so area metrics compare like with like. The tag is therefore per triangle and
 /// travels with the triangle through every slice. Vertices are shared between triangles (indexed),
-/// so closedness and orientation are checked on the index structure, not on coordinates.
+/// so closedness and orientation are checked on the index structure, not on coordinates. A game
+/// asset's normals, UVs, tangents and materials ride along per triangle corner (mesh_attributes.h).
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+
+#include "algorithms/core/mesh_attributes.h"
 
 #include <array>
 #include <cstdint>
@@ -32,17 +35,20 @@ enum class FaceTag : std::uint8_t {
   repair = 2,   ///< added by mesh repair (a filled hole, a wrap), not part of the input's own surface
 };
 
-/// Indexed triangle mesh. Invariant: `tags.size() == triangles.size()`, every index < vertices.size().
+/// Indexed triangle mesh. Invariant: `tags.size() == triangles.size()`, every index < vertices.size(),
+/// and `attributes` empty or sized to the triangles (check_attributes). Code that adds triangles to a
+/// mesh that may carry attributes goes through attribute_transfer.h, which keeps them in step.
 struct Mesh {
   std::vector<Vec3> vertices;        ///< #V positions, m
   std::vector<Triangle> triangles;   ///< #F vertex index triples, outward counter-clockwise
   std::vector<FaceTag> tags;         ///< #F face origins
+  MeshAttributes attributes;         ///< per-corner normals, UVs, tangents, per-face materials; usually empty
 
   /// Number of triangles.
   [[nodiscard]] std::size_t triangle_count() const { return triangles.size(); }
   /// True when the mesh has no triangles.
   [[nodiscard]] bool empty() const { return triangles.empty(); }
-  /// Adds a triangle with its tag.
+  /// Adds a triangle with its tag (no attribute values: for meshes without attributes).
   void add_triangle(std::int32_t a, std::int32_t b, std::int32_t c, FaceTag tag) {
     triangles.push_back({a, b, c});
     tags.push_back(tag);

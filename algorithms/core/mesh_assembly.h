@@ -6,7 +6,8 @@
 namespace shatter {
 
 /// Appends `part` to `into`: its vertices after those of `into`, its triangles with indices shifted
-/// accordingly and their tags kept. No vertex is shared between the two.
+/// accordingly and their tags and attributes kept (`into` takes `part`'s attribute frame when it has
+/// no triangles yet; otherwise the two must share it). No vertex is shared between the two.
 void append_mesh(Mesh& into, const Mesh& part);
 
 /// `mesh` with every triangle's orientation reversed (tags kept).

@@ -1,5 +1,7 @@
 #include "algorithms/core/mesh_components.h"
 
+#include "algorithms/core/attribute_transfer.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -52,6 +54,7 @@ int label_parts(const Mesh& mesh, std::vector<std::int32_t>& vertex_part) {
 
 std::vector<Mesh> split_parts(const Mesh& mesh, const std::vector<std::int32_t>& vertex_part, int parts) {
   std::vector<Mesh> out(static_cast<std::size_t>(parts));
+  for (Mesh& part : out) copy_attribute_frame(mesh, part);
   std::vector<std::int32_t> new_index(mesh.vertices.size(), -1);
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
@@ -62,7 +65,7 @@ std::vector<Mesh> split_parts(const Mesh& mesh, const std::vector<std::int32_t>&
       if (idx < 0) idx = part.add_vertex(mesh.vertices[t[k]]);
       mapped[k] = idx;
     }
-    part.add_triangle(mapped[0], mapped[1], mapped[2], mesh.tags[f]);
+    add_triangle_from(part, mesh, f, mapped[0], mapped[1], mapped[2]);
   }
   return out;
 }

@@ -1,5 +1,7 @@
 #include "algorithms/core/mesh_validation.h"
 
+#include "algorithms/core/attribute_transfer.h"
+
 #include "algorithms/core/edge_classification.h"
 #include "algorithms/core/pinched_vertices.h"
 #include "algorithms/core/shell_classification.h"
@@ -98,6 +100,7 @@ Result<ValidationReport> validate_solid(Mesh& mesh, const std::string& what) {
                                                      [&](const Shell& s) { return s.outward() == shells.inverted; }));
     if (shells.inverted) {
       for (Triangle& t : mesh.triangles) std::swap(t[1], t[2]);
+      reverse_corner_order(mesh);
       report.flipped = true;
     }
   }

@@ -1,6 +1,7 @@
 #include "algorithms/core/volume_components.h"
 
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_assembly.h"
 #include "algorithms/core/mesh_components.h"
 #include "algorithms/core/winding_number.h"
 
@@ -10,15 +11,6 @@
 namespace shatter {
 namespace {
 
-/// Appends `part` to `volume` (vertices and triangles, tags kept).
-void append(Mesh& volume, const Mesh& part) {
-  const auto offset = static_cast<std::int32_t>(volume.vertices.size());
-  volume.vertices.insert(volume.vertices.end(), part.vertices.begin(), part.vertices.end());
-  for (std::size_t f = 0; f < part.triangles.size(); ++f) {
-    const Triangle& t = part.triangles[f];
-    volume.add_triangle(t[0] + offset, t[1] + offset, t[2] + offset, part.tags[f]);
-  }
-}
 
 std::vector<Mesh> group(std::vector<Mesh>&& parts) {
   if (parts.size() < 2) return std::move(parts);
@@ -57,7 +49,7 @@ std::vector<Mesh> group(std::vector<Mesh>&& parts) {
     volumes.push_back(std::move(parts[i]));
   }
   for (std::size_t i = 0; i < parts.size(); ++i)
-    if (owner[i] >= 0) append(volumes[static_cast<std::size_t>(volume_of[static_cast<std::size_t>(owner[i])])], parts[i]);
+    if (owner[i] >= 0) append_mesh(volumes[static_cast<std::size_t>(volume_of[static_cast<std::size_t>(owner[i])])], parts[i]);
   return volumes;
 }
 

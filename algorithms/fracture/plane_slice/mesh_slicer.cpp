@@ -1,4 +1,5 @@
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/axis_projection.h"
 
 #include "algorithms/core/predicates.h"
@@ -38,15 +39,18 @@ SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below
   halves_[above_side] = &halves[above_side];
   for (auto& index : index_) index.assign(mesh.vertices.size(), -1);
   crossing_points_.clear();
+  crossing_ends_.clear();
   crossing_of_edge_.clear();
+  attributed_ = has_attributes(mesh);
   outline_.clear();
   for (Mesh* half : halves_) {
+    if (attributed_) copy_attribute_frame(mesh, *half);
     half->vertices.reserve(mesh.vertices.size() / 2 + 16);
     half->triangles.reserve(mesh.triangles.size() / 2 + 16);
     half->tags.reserve(mesh.triangles.size() / 2 + 16);
   }
 
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) split_triangle(mesh.triangles[f], mesh.tags[f]);
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) split_triangle(f);
   if (!add_cap()) return SliceOutcome::failed;
 
   below = std::move(halves[below_side]);
@@ -70,6 +74,7 @@ std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
   t = std::clamp(t, 0.0, 1.0);
   const std::int32_t ref = vertex_count_ + static_cast<std::int32_t>(crossing_points_.size());
   crossing_points_.push_back(pp + t * (pm - pp));
+  crossing_ends_.push_back({p, m, t});
   index_[below_side].push_back(-1);
   index_[above_side].push_back(-1);
   crossing_of_edge_.emplace(key, ref);
@@ -82,8 +87,24 @@ std::int32_t MeshSlicer::index_in(Side side, std::int32_t ref) {
   return idx;
 }
 
-void MeshSlicer::emit(Side side, std::int32_t r0, std::int32_t r1, std::int32_t r2, FaceTag tag) {
-  halves_[side]->add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), tag);
+void MeshSlicer::emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2) {
+  if (!attributed_) {
+    halves_[side]->add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), mesh_->tags[f]);
+  } else {
+    // Each corner as a mix of the source triangle's corners, at the parameter of its position.
+    const Triangle& source = mesh_->triangles[f];
+    const auto corner_of = [&](std::int32_t v) { return v == source[0] ? 0 : v == source[1] ? 1 : 2; };
+    const auto mix_of = [&](std::int32_t ref) -> CornerMix {
+      if (ref < vertex_count_) {
+        const int k = corner_of(ref);
+        return {k, k, 0.0};
+      }
+      const CrossingEnds& e = crossing_ends_[static_cast<std::size_t>(ref - vertex_count_)];
+      return {corner_of(e.p), corner_of(e.m), e.t};
+    };
+    add_triangle_mixed(*halves_[side], *mesh_, f, index_in(side, r0), index_in(side, r1), index_in(side, r2),
+                       {mix_of(r0), mix_of(r1), mix_of(r2)});
+  }
   if (side != below_side) return;
   // Record the lower half's in-plane half-edges; twins cancel, the rest is the cut outline.
   const std::int32_t r[3] = {r0, r1, r2};
@@ -100,13 +121,14 @@ void MeshSlicer::emit(Side side, std::int32_t r0, std::int32_t r1, std::int32_t 
   }
 }
 
-void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
+void MeshSlicer::split_triangle(std::size_t f) {
+  const Triangle& t = mesh_->triangles[f];
   const int s[3] = {side_[static_cast<std::size_t>(t[0])], side_[static_cast<std::size_t>(t[1])],
                     side_[static_cast<std::size_t>(t[2])]};
   const int positive = (s[0] > 0) + (s[1] > 0) + (s[2] > 0);
   const int negative = (s[0] < 0) + (s[1] < 0) + (s[2] < 0);
-  if (negative == 0 && positive > 0) return emit(above_side, t[0], t[1], t[2], tag);
-  if (positive == 0 && negative > 0) return emit(below_side, t[0], t[1], t[2], tag);
+  if (negative == 0 && positive > 0) return emit(above_side, f, t[0], t[1], t[2]);
+  if (positive == 0 && negative > 0) return emit(below_side, f, t[0], t[1], t[2]);
   if (positive == 0 && negative == 0) {
     // In the plane: the face bounds the side its normal points away from.
     const AxisProjection proj(plane_.normal);
@@ -114,7 +136,7 @@ void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
                         &mesh_->vertices[static_cast<std::size_t>(t[1])],
                         &mesh_->vertices[static_cast<std::size_t>(t[2])]};
     const int facing = orient2d(proj(*p[0]), proj(*p[1]), proj(*p[2]));
-    return emit(facing >= 0 ? below_side : above_side, t[0], t[1], t[2], tag);
+    return emit(facing >= 0 ? below_side : above_side, f, t[0], t[1], t[2]);
   }
   const auto side_of = [&](int k) { return s[k] > 0 ? above_side : below_side; };
   if (positive + negative == 2) {
@@ -125,8 +147,8 @@ void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
     const std::int32_t b = t[(z + 1) % 3];
     const std::int32_t c = t[(z + 2) % 3];
     const std::int32_t x = crossing(b, c);
-    emit(side_of((z + 1) % 3), a, b, x, tag);
-    emit(side_of((z + 2) % 3), a, x, c, tag);
+    emit(side_of((z + 1) % 3), f, a, b, x);
+    emit(side_of((z + 2) % 3), f, a, x, c);
     return;
   }
   // One corner alone on its side: a triangle there, a quad (two triangles) on the other.
@@ -140,9 +162,9 @@ void MeshSlicer::split_triangle(const Triangle& t, FaceTag tag) {
   const std::int32_t xac = crossing(a, c);
   const Side lone_side = side_of(lone);
   const Side other_side = lone_side == above_side ? below_side : above_side;
-  emit(lone_side, a, xab, xac, tag);
-  emit(other_side, xab, b, c, tag);
-  emit(other_side, xab, c, xac, tag);
+  emit(lone_side, f, a, xab, xac);
+  emit(other_side, f, xab, b, c);
+  emit(other_side, f, xab, c, xac);
 }
 
 bool MeshSlicer::add_cap() {
@@ -193,10 +215,11 @@ bool MeshSlicer::add_cap() {
     const std::int32_t r0 = cap_ref_[static_cast<std::size_t>(t[0])];
     const std::int32_t r1 = cap_ref_[static_cast<std::size_t>(t[1])];
     const std::int32_t r2 = cap_ref_[static_cast<std::size_t>(t[2])];
-    halves_[below_side]->add_triangle(index_in(below_side, r0), index_in(below_side, r1),
-                                      index_in(below_side, r2), FaceTag::cut);
-    halves_[above_side]->add_triangle(index_in(above_side, r0), index_in(above_side, r2),
-                                      index_in(above_side, r1), FaceTag::cut);
+    // The lower half's cap faces the positive side, the upper half's the negative side.
+    add_cut_triangle(*halves_[below_side], index_in(below_side, r0), index_in(below_side, r1),
+                     index_in(below_side, r2), plane_.normal);
+    add_cut_triangle(*halves_[above_side], index_in(above_side, r0), index_in(above_side, r2),
+                     index_in(above_side, r1), -plane_.normal);
   }
   return true;
 }

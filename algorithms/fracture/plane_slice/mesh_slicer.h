@@ -11,6 +11,11 @@
 /// triangulation of that outline in an axis-aligned projection (exact: no rotation of coordinates),
 /// used as is for the lower half and reversed for the upper half.
 ///
+/// Attributes (mesh_attributes.h): a corner at a crossing gets its triangle's two corner values mixed
+/// at the parameter its position was made with, measured from the edge's positive end as the position
+/// is; cap triangles are dressed as cut faces (attribute_transfer.h). A mesh without attributes takes
+/// none of these steps.
+///
 /// The slicer keeps scratch buffers between calls; one slicer per thread.
 
 #include "algorithms/core/mesh.h"
@@ -39,7 +44,7 @@ class MeshSlicer {
  public:
   /// Slices closed, outward `mesh` by `plane`: `below` receives the closed part where
   /// dot(normal, x - point) < 0, `above` the rest; both are overwritten only when the result is `cut`.
-  /// Triangles keep their tags; cap triangles are tagged FaceTag::cut.
+  /// Triangles keep their tags and attributes; cap triangles are tagged FaceTag::cut.
   SliceOutcome slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above);
 
   /// Why the last slice failed (empty unless it returned `failed`).
@@ -49,8 +54,8 @@ class MeshSlicer {
   enum Side : int { below_side = 0, above_side = 1 };
   std::int32_t crossing(std::int32_t a, std::int32_t b);
   std::int32_t index_in(Side side, std::int32_t ref);
-  void emit(Side side, std::int32_t r0, std::int32_t r1, std::int32_t r2, FaceTag tag);
-  void split_triangle(const Triangle& t, FaceTag tag);
+  void emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2);
+  void split_triangle(std::size_t f);
   bool add_cap();
   [[nodiscard]] bool on_plane(std::int32_t ref) const {
     return ref >= vertex_count_ || side_[static_cast<std::size_t>(ref)] == 0;
@@ -68,6 +73,14 @@ class MeshSlicer {
   std::vector<std::int8_t> side_;                       // per vertex: -1, 0, +1 (exact)
   std::vector<std::int32_t> index_[2];                  // per ref: index in each half, -1 if absent
   std::vector<Vec3> crossing_points_;                   // per crossing ref - V
+  /// Where a crossing's position came from: p + t (m - p), p the edge's end on the positive side.
+  struct CrossingEnds {
+    std::int32_t p;
+    std::int32_t m;
+    double t;
+  };
+  std::vector<CrossingEnds> crossing_ends_;             // per crossing ref - V
+  bool attributed_ = false;                             // the sliced mesh carries attributes
   std::unordered_map<std::uint64_t, std::int32_t> crossing_of_edge_;  // undirected edge -> ref
   std::unordered_map<std::uint64_t, int> outline_;      // lower half's in-plane half-edges, net count
   std::vector<std::int32_t> cap_ref_;                   // cap point -> ref

@@ -1,0 +1,183 @@
+#include "algorithms/core/attribute_transfer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace shatter {
+namespace {
+
+std::size_t stride_of(const MeshAttributes& a) { return static_cast<std::size_t>(a.layout.stride()); }
+
+void copy_material(Mesh& dst, const Mesh& src, std::size_t f) {
+  if (!src.attributes.materials.empty()) dst.attributes.materials.push_back(src.attributes.materials[f]);
+}
+
+}  // namespace
+
+void copy_attribute_frame(const Mesh& src, Mesh& dst) {
+  dst.attributes.layout = src.attributes.layout;
+  dst.attributes.slots = src.attributes.slots;
+  dst.attributes.cut = src.attributes.cut;
+  dst.attributes.corners.clear();
+  dst.attributes.materials.clear();
+}
+
+void add_triangle_from(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
+                       const std::array<int, 3>& order) {
+  dst.add_triangle(a, b, c, src.tags[f]);
+  if (src.attributes.empty()) return;
+  copy_material(dst, src, f);
+  const std::size_t n = stride_of(src.attributes);
+  if (n == 0) return;
+  for (const int k : order) {
+    const double* values = src.attributes.corner(f, k);
+    dst.attributes.corners.insert(dst.attributes.corners.end(), values, values + n);
+  }
+}
+
+void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
+                        const std::array<CornerMix, 3>& mix) {
+  dst.add_triangle(a, b, c, src.tags[f]);
+  if (src.attributes.empty()) return;
+  copy_material(dst, src, f);
+  const std::size_t n = stride_of(src.attributes);
+  if (n == 0) return;
+  std::vector<double>& out = dst.attributes.corners;
+  for (const CornerMix& m : mix) {
+    const double* from = src.attributes.corner(f, m.from);
+    const double* to = src.attributes.corner(f, m.to);
+    for (std::size_t i = 0; i < n; ++i) out.push_back(from[i] + m.t * (to[i] - from[i]));
+  }
+}
+
+std::array<Vec3, 2> cut_plane_basis(const Vec3& normal) {
+  Vec3 n = normal.normalized();
+  int largest = 0;
+  for (int i = 1; i < 3; ++i)
+    if (std::abs(n[i]) > std::abs(n[largest])) largest = i;
+  if (n[largest] < 0.0) n = -n;
+  // Duff, Burgess, Christensen, Hery, Kensler, Liani, Villemin (2017), listing 3.
+  const double sign = std::copysign(1.0, n.z());
+  const double a = -1.0 / (sign + n.z());
+  const double b = n.x() * n.y() * a;
+  return {Vec3(1.0 + sign * n.x() * n.x() * a, sign * b, -sign * n.x()), Vec3(b, sign + n.y() * n.y() * a, -n.y())};
+}
+
+Vec2 cut_face_uv(const Vec3& p, const Vec3& normal, double uv_scale) {
+  const std::array<Vec3, 2> e = cut_plane_basis(normal);
+  return Vec2(p.dot(e[0]), p.dot(e[1])) / uv_scale;
+}
+
+void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c, const Vec3& outward_normal) {
+  dst.add_triangle(a, b, c, FaceTag::cut);
+  MeshAttributes& attr = dst.attributes;
+  if (attr.empty()) return;
+  if (!attr.slots.empty()) attr.materials.push_back(attr.cut.material);
+  const AttributeLayout& layout = attr.layout;
+  if (layout.empty()) return;
+  const Vec3 n = outward_normal.normalized();
+  const std::array<Vec3, 2> e = cut_plane_basis(n);
+  // Handedness: +1 when n is the canonical normal e1 x e2, -1 on the crack's other face.
+  const double handedness = e[0].cross(e[1]).dot(n) >= 0.0 ? 1.0 : -1.0;
+  const double scale = attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0;
+  for (const std::int32_t v : {a, b, c}) {
+    const Vec3& p = dst.vertices[static_cast<std::size_t>(v)];
+    if (layout.normals) attr.corners.insert(attr.corners.end(), {n.x(), n.y(), n.z()});
+    const Vec2 uv(p.dot(e[0]) / scale, p.dot(e[1]) / scale);
+    for (int s = 0; s < layout.uv_sets; ++s) attr.corners.insert(attr.corners.end(), {uv.x(), uv.y()});
+    if (layout.tangents) attr.corners.insert(attr.corners.end(), {e[0].x(), e[0].y(), e[0].z(), handedness});
+  }
+}
+
+double default_cut_uv_scale(const Mesh& mesh) {
+  const Aabb box = bounding_box(mesh);
+  if (!(box.min.x() <= box.max.x())) return 1.0;
+  const double side = (box.max - box.min).maxCoeff();
+  return side > 0.0 && std::isfinite(side) ? side : 1.0;
+}
+
+void prepare_cut_faces(Mesh& mesh, double uv_scale) {
+  MeshAttributes& attr = mesh.attributes;
+  if (attr.empty()) return;
+  attr.cut.uv_scale = uv_scale > 0.0 ? uv_scale : default_cut_uv_scale(mesh);
+  if (attr.cut.material >= 0) return;
+  if (attr.slots.empty()) {
+    MaterialSlot whole;
+    whole.name = "default";
+    attr.slots.push_back(whole);
+    attr.materials.assign(mesh.triangles.size(), 0);
+  }
+  // A name no input slot has: "interior", else "interior_2", ...
+  std::string name = "interior";
+  for (int k = 2; std::any_of(attr.slots.begin(), attr.slots.end(), [&](const MaterialSlot& s) { return s.name == name; });
+       ++k)
+    name = "interior_" + std::to_string(k);
+  MaterialSlot interior;
+  interior.name = name;
+  interior.base_color = {0.5, 0.5, 0.5, 1.0};
+  attr.slots.push_back(interior);
+  attr.cut.material = static_cast<std::int32_t>(attr.slots.size() - 1);
+}
+
+void reverse_corner_order(Mesh& mesh) {
+  const std::size_t n = stride_of(mesh.attributes);
+  if (n == 0) return;
+  std::vector<double>& c = mesh.attributes.corners;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+    std::swap_ranges(c.begin() + static_cast<std::ptrdiff_t>((3 * f + 1) * n),
+                     c.begin() + static_cast<std::ptrdiff_t>((3 * f + 2) * n),
+                     c.begin() + static_cast<std::ptrdiff_t>((3 * f + 2) * n));
+}
+
+void keep_triangles(Mesh& mesh, const std::vector<std::uint8_t>& keep) {
+  const std::size_t n = stride_of(mesh.attributes);
+  const bool materials = !mesh.attributes.materials.empty();
+  std::size_t out = 0;
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+    if (!keep[f]) continue;
+    mesh.triangles[out] = mesh.triangles[f];
+    mesh.tags[out] = mesh.tags[f];
+    if (materials) mesh.attributes.materials[out] = mesh.attributes.materials[f];
+    if (n > 0 && out != f) {
+      std::vector<double>& c = mesh.attributes.corners;
+      std::copy_n(c.begin() + static_cast<std::ptrdiff_t>(3 * f * n), 3 * n, c.begin() + static_cast<std::ptrdiff_t>(3 * out * n));
+    }
+    ++out;
+  }
+  mesh.triangles.resize(out);
+  mesh.tags.resize(out);
+  if (materials) mesh.attributes.materials.resize(out);
+  mesh.attributes.corners.resize(3 * out * n);
+}
+
+Status check_attributes(const Mesh& mesh, const std::string& who) {
+  const MeshAttributes& attr = mesh.attributes;
+  if (attr.empty()) return {};
+  const AttributeLayout& layout = attr.layout;
+  const std::size_t faces = mesh.triangles.size();
+  if (layout.uv_sets < 0 || layout.uv_sets > kMaxUvSets)
+    return Error{who + ": " + std::to_string(layout.uv_sets) + " UV sets (at most " + std::to_string(kMaxUvSets) + ")"};
+  if (layout.tangents && !layout.normals) return Error{who + ": tangents without normals"};
+  if (attr.corners.size() != 3 * faces * stride_of(attr))
+    return Error{who + ": " + std::to_string(attr.corners.size()) + " corner values for " + std::to_string(faces) +
+                 " triangles of " + std::to_string(layout.stride()) + " values per corner"};
+  if (attr.slots.empty() != attr.materials.empty() || (!attr.materials.empty() && attr.materials.size() != faces))
+    return Error{who + ": " + std::to_string(attr.materials.size()) + " face materials for " + std::to_string(faces) +
+                 " triangles and " + std::to_string(attr.slots.size()) + " material slots"};
+  const auto slots = static_cast<std::int32_t>(attr.slots.size());
+  if (attr.cut.material < 0 || attr.cut.material >= slots || !(attr.cut.uv_scale > 0.0) ||
+      !std::isfinite(attr.cut.uv_scale))
+    return Error{who + ": the attributes have no interior material or cut-face UV scale (prepare_cut_faces)"};
+  for (std::size_t f = 0; f < attr.materials.size(); ++f)
+    if (attr.materials[f] < 0 || attr.materials[f] >= slots)
+      return Error{who + ": triangle " + std::to_string(f) + " has material " + std::to_string(attr.materials[f]) +
+                   " of " + std::to_string(slots) + " slots"};
+  const std::size_t n = stride_of(attr);
+  for (std::size_t i = 0; i < attr.corners.size(); ++i)
+    if (!std::isfinite(attr.corners[i]))
+      return Error{who + ": triangle " + std::to_string(i / (3 * n)) + " has a corner attribute that is not finite"};
+  return {};
+}
+
+}  // namespace shatter

@@ -1,0 +1,85 @@
+#pragma once
+/// Keeping a mesh's per-corner attributes (mesh_attributes.h) in step with its triangles: copying a
+/// triangle with its corners, mixing corners where a cut crosses an edge, dressing cut faces, and
+/// checking that a mesh's attributes are consistent. Every function here does nothing beyond the
+/// geometry when the mesh carries no attributes.
+///
+/// Cut faces: the normal is the cut plane's outward unit normal. Every UV set gets the planar
+/// projection u = (p . e1) / s, v = (p . e2) / s, where s is the style's `uv_scale` (metres per UV
+/// unit) and (e1, e2) is an orthonormal basis of the plane built from the plane's canonical normal:
+/// the one of +n, -n whose largest-magnitude component is positive (Duff et al. 2017, "Building an
+/// orthonormal basis, revisited"). Both faces of one crack therefore get the same UV at the same point,
+/// so an interior texture continues across the crack. The tangent is e1 with handedness +1 on the
+/// canonical side and -1 on the other (bitangent = cross(normal, tangent) * w = e2 on both). The
+/// material is the style's interior slot.
+
+#include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace shatter {
+
+/// True when `mesh` carries attributes.
+[[nodiscard]] inline bool has_attributes(const Mesh& mesh) { return !mesh.attributes.empty(); }
+
+/// Gives `dst` the layout, material slots and cut-face style of `src`, with no per-face values (call
+/// before appending `src`'s triangles to an empty mesh).
+void copy_attribute_frame(const Mesh& src, Mesh& dst);
+
+/// Appends triangle (a, b, c) of `dst` with the tag, material and corner values of triangle `f` of
+/// `src`; new corner i takes corner `order[i]` of `f` (the default keeps them; {0, 2, 1} reverses).
+void add_triangle_from(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
+                       const std::array<int, 3>& order = {0, 1, 2});
+
+/// One corner of a triangle that a cut made: corner `from` of the source triangle mixed towards its
+/// corner `to` at parameter `t` (the value is from + t (to - from), channel by channel; `t` is the
+/// parameter the position was made with). An original corner is {k, k, 0}.
+struct CornerMix {
+  int from = 0;    ///< corner of the source triangle, 0..2
+  int to = 0;      ///< corner of the source triangle, 0..2
+  double t = 0.0;  ///< in [0, 1]
+};
+
+/// Appends triangle (a, b, c) of `dst` cut from triangle `f` of `src`: its tag and material, and each
+/// corner's values mixed as `mix` says.
+void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
+                        const std::array<CornerMix, 3>& mix);
+
+/// Appends the cut face (a, b, c) of `dst` (tag cut): when `dst` carries attributes, its corners are
+/// dressed by `dst`'s cut-face style with `outward_normal` (any non-zero length) as the plane normal.
+void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c, const Vec3& outward_normal);
+
+/// Orthonormal basis (e1, e2) of the plane with normal `normal`, built from its canonical normal (see
+/// the file comment): the same basis for `normal` and `-normal`.
+[[nodiscard]] std::array<Vec3, 2> cut_plane_basis(const Vec3& normal);
+
+/// The cut-face UV of point `p` on a plane with normal `normal` (metres to UV by `uv_scale`).
+[[nodiscard]] Vec2 cut_face_uv(const Vec3& p, const Vec3& normal, double uv_scale);
+
+/// The cut-face UV scale used when neither the case nor a flag sets one: the largest side of the
+/// mesh's bounding box, so the interior texture spans the solid once (1 for an empty mesh).
+[[nodiscard]] double default_cut_uv_scale(const Mesh& mesh);
+
+/// Readies an attributed mesh for fracture: adds the interior material slot (named "interior", mid
+/// grey) after the mesh's own slots, giving every face the slot "default" first when the mesh has
+/// none, and sets the cut-face UV scale (`uv_scale` > 0, or default_cut_uv_scale when 0). Does nothing
+/// to a mesh without attributes. Calling it again only updates the scale.
+void prepare_cut_faces(Mesh& mesh, double uv_scale = 0.0);
+
+/// Reverses every triangle's corner values in step with swapping each triangle's second and third
+/// index (a whole-mesh orientation flip).
+void reverse_corner_order(Mesh& mesh);
+
+/// Keeps the triangles whose `keep` entry is non-zero, with their tags and attributes, in order.
+void keep_triangles(Mesh& mesh, const std::vector<std::uint8_t>& keep);
+
+/// Checks the invariants of mesh_attributes.h, that every value is finite, at most kMaxUvSets UV sets,
+/// tangents only with normals, and a prepared cut-face style (interior slot in range, scale > 0) on
+/// an attributed mesh. The error names `who` and the first offending triangle.
+Status check_attributes(const Mesh& mesh, const std::string& who);
+
+}  // namespace shatter
