@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -41,11 +42,18 @@ struct AttributeLayout {
   bool operator==(const AttributeLayout&) const = default;
 };
 
+/// An image carried inside an asset (a glTF binary's texture), shared by every mesh cut from it.
+struct TextureImage {
+  std::string mime_type;            ///< "image/png" or "image/jpeg"
+  std::vector<std::uint8_t> bytes;  ///< the encoded image
+};
+
 /// One material of a mesh: what a renderer needs to draw its faces (a glTF metallic-roughness base).
 struct MaterialSlot {
-  std::string name;                                  ///< as the input named it (unique within a mesh)
+  std::string name;                                      ///< as the input named it (unique within a mesh)
   std::array<double, 4> base_color{1.0, 1.0, 1.0, 1.0};  ///< linear RGBA, each in [0, 1]
-  std::string base_color_texture;                    ///< image path or URI as the input gave it; empty: none
+  std::string base_color_texture;  ///< image file as the input named it, relative to the input's folder; empty: none
+  std::shared_ptr<const TextureImage> base_color_image;  ///< the image itself when the input embedded it
   bool operator==(const MaterialSlot&) const = default;
 };
 
