@@ -9,6 +9,10 @@ namespace shatter {
 /// self-intersection/ families); `registries` must outlive the benchmark run.
 void register_fracture_benchmarks(const Registries& registries);
 
+/// attributes/<mesh>/<fracturer>/{geometry,attributes}/<n>: each fracturer on one solid with and
+/// without attributes (attribute_benchmarks.cpp); `registries` must outlive the benchmark run.
+void register_attribute_benchmarks(const Registries& registries);
+
 /// evaluate_wall/<model> and cascade_wall/<model> for every stress model of `registries`, which must
 /// outlive the benchmark run.
 void register_stress_benchmarks(const Registries& registries);

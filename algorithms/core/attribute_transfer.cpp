@@ -1,5 +1,7 @@
 #include "algorithms/core/attribute_transfer.h"
 
+#include "algorithms/core/triangle_locator.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
@@ -11,6 +13,21 @@ std::size_t stride_of(const MeshAttributes& a) { return static_cast<std::size_t>
 
 void copy_material(Mesh& dst, const Mesh& src, std::size_t f) {
   if (!src.attributes.materials.empty()) dst.attributes.materials.push_back(src.attributes.materials[f]);
+}
+
+/// Appends the corner values of a planar face with unit normal `n` at positions `p`: the cut-face
+/// dressing of the file comment of attribute_transfer.h (normal, planar UVs, tangent).
+void append_planar_corners(MeshAttributes& attr, const Vec3& n, const std::array<Vec3, 3>& p, double scale) {
+  const AttributeLayout& layout = attr.layout;
+  const std::array<Vec3, 2> e = cut_plane_basis(n);
+  // Handedness: +1 when n is the canonical normal e1 x e2, -1 on the crack's other face.
+  const double handedness = e[0].cross(e[1]).dot(n) >= 0.0 ? 1.0 : -1.0;
+  for (const Vec3& q : p) {
+    if (layout.normals) attr.corners.insert(attr.corners.end(), {n.x(), n.y(), n.z()});
+    for (int set = 0; set < layout.uv_sets; ++set)
+      attr.corners.insert(attr.corners.end(), {q.dot(e[0]) / scale, q.dot(e[1]) / scale});
+    if (layout.tangents) attr.corners.insert(attr.corners.end(), {e[0].x(), e[0].y(), e[0].z(), handedness});
+  }
 }
 
 }  // namespace
@@ -74,20 +91,12 @@ void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c,
   MeshAttributes& attr = dst.attributes;
   if (attr.empty()) return;
   if (!attr.slots.empty()) attr.materials.push_back(attr.cut.material);
-  const AttributeLayout& layout = attr.layout;
-  if (layout.empty()) return;
-  const Vec3 n = outward_normal.normalized();
-  const std::array<Vec3, 2> e = cut_plane_basis(n);
-  // Handedness: +1 when n is the canonical normal e1 x e2, -1 on the crack's other face.
-  const double handedness = e[0].cross(e[1]).dot(n) >= 0.0 ? 1.0 : -1.0;
+  if (attr.layout.empty()) return;
   const double scale = attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0;
-  for (const std::int32_t v : {a, b, c}) {
-    const Vec3& p = dst.vertices[static_cast<std::size_t>(v)];
-    if (layout.normals) attr.corners.insert(attr.corners.end(), {n.x(), n.y(), n.z()});
-    const Vec2 uv(p.dot(e[0]) / scale, p.dot(e[1]) / scale);
-    for (int s = 0; s < layout.uv_sets; ++s) attr.corners.insert(attr.corners.end(), {uv.x(), uv.y()});
-    if (layout.tangents) attr.corners.insert(attr.corners.end(), {e[0].x(), e[0].y(), e[0].z(), handedness});
-  }
+  append_planar_corners(attr, outward_normal.normalized(),
+                        {dst.vertices[static_cast<std::size_t>(a)], dst.vertices[static_cast<std::size_t>(b)],
+                         dst.vertices[static_cast<std::size_t>(c)]},
+                        scale);
 }
 
 double default_cut_uv_scale(const Mesh& mesh) {
@@ -97,7 +106,7 @@ double default_cut_uv_scale(const Mesh& mesh) {
   return side > 0.0 && std::isfinite(side) ? side : 1.0;
 }
 
-void prepare_cut_faces(Mesh& mesh, double uv_scale) {
+void prepare_cut_faces(Mesh& mesh, double uv_scale, const MaterialSlot* interior) {
   MeshAttributes& attr = mesh.attributes;
   if (attr.empty()) return;
   attr.cut.uv_scale = uv_scale > 0.0 ? uv_scale : default_cut_uv_scale(mesh);
@@ -108,15 +117,20 @@ void prepare_cut_faces(Mesh& mesh, double uv_scale) {
     attr.slots.push_back(whole);
     attr.materials.assign(mesh.triangles.size(), 0);
   }
+  MaterialSlot slot;
+  if (interior != nullptr) {
+    slot = *interior;
+  } else {
+    slot.name = "interior";
+    slot.base_color = {0.5, 0.5, 0.5, 1.0};
+  }
   // A name no input slot has: "interior", else "interior_2", ...
-  std::string name = "interior";
-  for (int k = 2; std::any_of(attr.slots.begin(), attr.slots.end(), [&](const MaterialSlot& s) { return s.name == name; });
+  const std::string base = slot.name;
+  for (int k = 2;
+       std::any_of(attr.slots.begin(), attr.slots.end(), [&](const MaterialSlot& s) { return s.name == slot.name; });
        ++k)
-    name = "interior_" + std::to_string(k);
-  MaterialSlot interior;
-  interior.name = name;
-  interior.base_color = {0.5, 0.5, 0.5, 1.0};
-  attr.slots.push_back(interior);
+    slot.name = base + "_" + std::to_string(k);
+  attr.slots.push_back(std::move(slot));
   attr.cut.material = static_cast<std::int32_t>(attr.slots.size() - 1);
 }
 
@@ -149,6 +163,48 @@ void keep_triangles(Mesh& mesh, const std::vector<std::uint8_t>& keep) {
   mesh.tags.resize(out);
   if (materials) mesh.attributes.materials.resize(out);
   mesh.attributes.corners.resize(3 * out * n);
+}
+
+void interpolate_corners(const MeshAttributes& attributes, std::size_t f, const Vec3& weights, double* out) {
+  const int n = attributes.layout.stride();
+  const double* a = attributes.corner(f, 0);
+  const double* b = attributes.corner(f, 1);
+  const double* c = attributes.corner(f, 2);
+  for (int i = 0; i < n; ++i) out[i] = weights[0] * a[i] + weights[1] * b[i] + weights[2] * c[i];
+}
+
+void transfer_attributes(const Mesh& from, Mesh& to) {
+  if (from.attributes.empty()) return;
+  copy_attribute_frame(from, to);
+  const TriangleLocator locate(from);
+  const std::size_t n = stride_of(from.attributes);
+  MeshAttributes& attr = to.attributes;
+  attr.corners.reserve(3 * n * to.triangles.size());
+  const double scale = attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : default_cut_uv_scale(from);
+  for (std::size_t f = 0; f < to.triangles.size(); ++f) {
+    const Triangle& t = to.triangles[f];
+    const std::array<Vec3, 3> p = {to.vertices[static_cast<std::size_t>(t[0])], to.vertices[static_cast<std::size_t>(t[1])],
+                       to.vertices[static_cast<std::size_t>(t[2])]};
+    const TriangleLocator::Hit hit = locate.nearest((p[0] + p[1] + p[2]) / 3.0);
+    const auto source = static_cast<std::size_t>(std::max<std::int32_t>(hit.triangle, 0));
+    if (!attr.slots.empty()) attr.materials.push_back(from.attributes.materials[source]);
+    if (n == 0) continue;
+    if (to.tags[f] != FaceTag::repair) {
+      const Triangle& s = from.triangles[source];
+      const Vec3& a = from.vertices[static_cast<std::size_t>(s[0])];
+      const Vec3& b = from.vertices[static_cast<std::size_t>(s[1])];
+      const Vec3& c = from.vertices[static_cast<std::size_t>(s[2])];
+      for (const Vec3& q : p) {
+        attr.corners.resize(attr.corners.size() + n);
+        interpolate_corners(from.attributes, source, barycentric_coordinates(q, a, b, c),
+                            attr.corners.data() + attr.corners.size() - n);
+      }
+      continue;
+    }
+    Vec3 normal = (p[1] - p[0]).cross(p[2] - p[0]);
+    if (!(normal.squaredNorm() > 0.0)) normal = Vec3::UnitZ();
+    append_planar_corners(attr, normal.normalized(), {p[0], p[1], p[2]}, scale);
+  }
 }
 
 Status check_attributes(const Mesh& mesh, const std::string& who) {

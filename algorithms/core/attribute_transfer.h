@@ -64,11 +64,13 @@ void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c,
 /// mesh's bounding box, so the interior texture spans the solid once (1 for an empty mesh).
 [[nodiscard]] double default_cut_uv_scale(const Mesh& mesh);
 
-/// Readies an attributed mesh for fracture: adds the interior material slot (named "interior", mid
-/// grey) after the mesh's own slots, giving every face the slot "default" first when the mesh has
-/// none, and sets the cut-face UV scale (`uv_scale` > 0, or default_cut_uv_scale when 0). Does nothing
-/// to a mesh without attributes. Calling it again only updates the scale.
-void prepare_cut_faces(Mesh& mesh, double uv_scale = 0.0);
+/// Readies an attributed mesh for fracture: adds the interior material slot after the mesh's own
+/// slots (`interior` when given, else one named "interior", mid grey; the name gets a suffix "_2",
+/// "_3", ... when the mesh already has a slot of that name), giving every face the slot "default"
+/// first when the mesh has none, and sets the cut-face UV scale (`uv_scale` > 0, or
+/// default_cut_uv_scale when 0). Does nothing to a mesh without attributes. Calling it again only
+/// updates the scale.
+void prepare_cut_faces(Mesh& mesh, double uv_scale = 0.0, const MaterialSlot* interior = nullptr);
 
 /// Reverses every triangle's corner values in step with swapping each triangle's second and third
 /// index (a whole-mesh orientation flip).
@@ -76,6 +78,19 @@ void reverse_corner_order(Mesh& mesh);
 
 /// Keeps the triangles whose `keep` entry is non-zero, with their tags and attributes, in order.
 void keep_triangles(Mesh& mesh, const std::vector<std::uint8_t>& keep);
+
+/// Writes to `out` (layout stride values) triangle `f`'s corner values weighted by `weights` (one
+/// weight per corner, e.g. barycentric coordinates).
+void interpolate_corners(const MeshAttributes& attributes, std::size_t f, const Vec3& weights, double* out);
+
+/// Gives `to` (a mesh made from `from` by repair: its faces lie on `from`'s, or were added and tagged
+/// FaceTag::repair) `from`'s attribute frame and per-face values. A face that is not a repair face
+/// takes, at each corner, the values of the nearest `from` triangle at that corner's barycentric
+/// coordinates, and that triangle's material. A repair face is dressed as a cut face with its own
+/// geometric normal (attribute_transfer.h's planar projection), in the material of the `from`
+/// triangle nearest its centroid: a patched hole looks like the surface around it. Does nothing when
+/// `from` has no attributes.
+void transfer_attributes(const Mesh& from, Mesh& to);
 
 /// Checks the invariants of mesh_attributes.h, that every value is finite, at most kMaxUvSets UV sets,
 /// tangents only with normals, and a prepared cut-face style (interior slot in range, scale > 0) on

@@ -1,5 +1,6 @@
 #include "algorithms/fracture/fracture_limits.h"
 
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/representable_range.h"
 #include "algorithms/core/solid_check.h"
 
@@ -9,6 +10,7 @@
 namespace shatter {
 
 Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts) {
+  if (Status s = check_attributes(solid, std::string(algorithm)); !s) return s;
   return check_solid(solid, algorithm, verdicts);
 }
 

@@ -15,8 +15,10 @@ namespace shatter {
 /// accept fewer (voronoi_fracturer.h, cgal_clip_fracturer.h); docs/limits.md gives the time at each.
 inline constexpr int kMaxFragments = 100000;
 
-/// The one input check of every fracturer: the acceptance rule (check_solid, solid_check.h), which
-/// includes the representable coordinate range; `algorithm` names the fracturer in the message.
+/// The one input check of every fracturer: consistent attributes (check_attributes: an attributed
+/// mesh must have been readied by prepare_cut_faces) and the acceptance rule (check_solid,
+/// solid_check.h), which includes the representable coordinate range; `algorithm` names the fracturer
+/// in the message.
 /// `verdicts` remembers meshes that passed (FractureParams::verdicts).
 Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts);
 

@@ -3,8 +3,10 @@
 #include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 #include "harness/accuracy/fracture_replay.h"
+#include "harness/metrics/attribute_metrics.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
+#include "harness/results/attribute_metrics_json.h"
 
 #include <fmt/core.h>
 
@@ -73,8 +75,11 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
                {"area_error", m.area_error},
                {"all_closed", m.all_closed},
                {"min_fragment_volume", m.min_fragment_volume}};
+  const AttributeMetrics a = attribute_metrics(solid.mesh, fragments);
+  if (a.measured) p.figures["attributes"] = attribute_metrics_json(a);
   // An invalid fracture has no accuracy: its failed checks are reported and it stays off the front.
-  const std::vector<std::string> failed = failed_fracture_checks(m);
+  std::vector<std::string> failed = failed_fracture_checks(m);
+  for (std::string& check : failed_attribute_checks(a)) failed.push_back(std::move(check));
   if (!failed.empty()) {
     p.figures["failed_checks"] = failed;
     return p;

@@ -88,6 +88,17 @@ struct MeshFileSpec {
 /// What the case's solid is made from.
 using MeshSpec = std::variant<BoxSpec, SphereSpec, CylinderSpec, TorusSpec, TubeSpec, PrismSpec, MeshFileSpec>;
 
+/// `appearance`: how the solid looks when rendered (attributes, mesh_attributes.h). A generated mesh
+/// with a `surface` material is dressed by box mapping (surface_mapping.h); every solid that carries
+/// attributes (also a mesh file's own) gets the `interior` material and the planar UVs of
+/// `cap_uv_scale` on its cut faces.
+struct AppearanceSpec {
+  std::optional<MaterialSlot> surface;   ///< `surface` {name, base_color}: dresses a generated mesh
+  double uv_scale = 1.0;                 ///< `uv_scale`: metres per UV unit of the box mapping, > 0
+  std::optional<MaterialSlot> interior;  ///< `interior` {name, base_color}: the cut faces' material
+  double cap_uv_scale = 0.0;             ///< `cap_uv_scale`: metres per UV unit on cut faces, > 0; 0: default
+};
+
 /// `prefracture`: either a fracturer run (`fracturer`, `fragments`, `seed`) or explicit `planes`.
 struct PrefractureSpec {
   std::string fracturer = "plane-slice";  ///< registered fracturer name (unchecked here)
@@ -196,6 +207,7 @@ struct Case {
   std::filesystem::path source;            ///< the case file it was read from (for messages)
   MeshSpec mesh;                           ///< `mesh` (required)
   Material material;                       ///< `material`; every field optional
+  AppearanceSpec appearance;               ///< `appearance`; every field optional
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);    ///< m/s^2
   std::vector<Aabb> anchors;               ///< `anchors[i].box`, m; a fragment overlapping one is fixed
   PrefractureSpec prefracture;             ///< `prefracture`

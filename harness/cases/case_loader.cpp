@@ -52,6 +52,41 @@ Material read_material(JsonReader& r, const json& v) {
   return m;
 }
 
+/// A render material: `{"name": ..., "base_color": [r, g, b, a]}`, name required, colour in [0, 1].
+MaterialSlot read_render_material(JsonReader& r, const json& v, std::string_view at) {
+  MaterialSlot m;
+  if (!r.object(v, at, {"name", "base_color"})) return m;
+  if (r.read_required(v, at, "name", m.name) &&
+      (m.name.empty() || m.name.find_first_of("\r\n") != std::string::npos))
+    r.fail(key_path(at, "name"), "must be one non-empty line");
+  if (!v.contains("base_color")) return m;
+  const json& color = v["base_color"];
+  const std::string color_at = key_path(at, "base_color");
+  if (!r.array(color, color_at)) return m;
+  if (color.size() != 4) {
+    r.fail(color_at, "must hold 4 numbers (r, g, b, a)");
+    return m;
+  }
+  for (std::size_t i = 0; i < 4 && !r.failed(); ++i) {
+    const std::string item = index_path(color_at, i);
+    if (r.convert(color[i], item, m.base_color[i]) && !(m.base_color[i] >= 0.0 && m.base_color[i] <= 1.0))
+      r.fail(item, "must be in [0, 1]");
+  }
+  return m;
+}
+
+AppearanceSpec read_appearance(JsonReader& r, const json& v) {
+  AppearanceSpec a;
+  if (!r.object(v, "appearance", {"surface", "uv_scale", "interior", "cap_uv_scale"})) return a;
+  if (v.contains("surface")) a.surface = read_render_material(r, v["surface"], "appearance.surface");
+  if (v.contains("interior")) a.interior = read_render_material(r, v["interior"], "appearance.interior");
+  read_in_range(r, v, "appearance", "uv_scale", a.uv_scale, kLengthRange);
+  read_in_range(r, v, "appearance", "cap_uv_scale", a.cap_uv_scale, kLengthRange);
+  if (!r.failed() && a.surface && a.surface->name == (a.interior ? a.interior->name : std::string("interior")))
+    r.fail("appearance.interior.name", "must differ from the surface material's name");
+  return a;
+}
+
 std::vector<Aabb> read_anchors(JsonReader& r, const json& v) {
   std::vector<Aabb> anchors;
   if (!r.array(v, "anchors")) return anchors;
@@ -293,7 +328,7 @@ Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   const json& root = *parsed;
   JsonReader r(file);
   if (!r.object(root, "", {"name", "description", "mesh", "material", "gravity", "anchors", "prefracture",
-                           "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs", "schedule", "fade_out", "debris"}))
+                           "appearance", "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs", "schedule", "fade_out", "debris"}))
     return r.error();
 
   Case c;
@@ -307,6 +342,9 @@ Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   else
     c.mesh = read_mesh_spec(r, root["mesh"], "mesh", source.parent_path());
   if (root.contains("material")) c.material = read_material(r, root["material"]);
+  if (root.contains("appearance")) c.appearance = read_appearance(r, root["appearance"]);
+  if (!r.failed() && c.appearance.surface && std::holds_alternative<MeshFileSpec>(c.mesh))
+    r.fail("appearance.surface", "a mesh file brings its own attributes; surface dresses generated meshes only");
   read_in_range(r, root, "", "gravity", c.gravity, kGravityComponentRange);
   if (root.contains("anchors")) c.anchors = read_anchors(r, root["anchors"]);
   if (root.contains("prefracture")) c.prefracture = read_prefracture(r, root["prefracture"]);

@@ -1,5 +1,6 @@
 #include "harness/cases/load_solid.h"
 
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/mesh_io.h"
 #include "algorithms/core/representable_range.h"
 
@@ -17,7 +18,7 @@ Result<std::pair<Mesh, ValidationReport>> accepted(Mesh mesh, const std::string&
 
 }  // namespace
 
-Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair) {
+Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair, const CutFaceOptions& cut) {
   // Before anything measures the mesh: the mass properties of a mesh past the range overflow.
   if (Status s = check_representable(mesh, what); !s) return s.error();
   Solid solid;
@@ -27,20 +28,23 @@ Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair)
     Result<RepairedSolid> repaired = repair_solid(mesh, what);
     if (!repaired) return repaired.error();
     solid.repair = repaired->report;
+    transfer_attributes(mesh, repaired->mesh);
     as_given = accepted(std::move(repaired->mesh), what + " (repaired)");
     if (!as_given) return as_given.error();
   }
   solid.mesh = std::move(as_given->first);
   solid.report = as_given->second;
+  prepare_cut_faces(solid.mesh, cut.uv_scale, cut.interior ? &*cut.interior : nullptr);
+  if (Status s = check_attributes(solid.mesh, what); !s) return s.error();
   solid.mass = mass_properties(solid.mesh);
   solid.area = surface_area(solid.mesh);
   return solid;
 }
 
-Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair) {
+Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair, const CutFaceOptions& cut) {
   Result<Mesh> mesh = read_mesh(path);
   if (!mesh) return mesh.error();
-  return make_solid(std::move(*mesh), path.string(), repair);
+  return make_solid(std::move(*mesh), path.string(), repair, cut);
 }
 
 }  // namespace shatter

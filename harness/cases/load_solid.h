@@ -8,6 +8,7 @@
 #include "algorithms/repair/repair_solid.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace shatter {
@@ -16,6 +17,12 @@ namespace shatter {
 enum class SolidRepair {
   repair,  ///< repair it (repair_solid); refuse it only when no solid exists
   refuse,  ///< refuse it with the acceptance rule's reason (`--no-repair`)
+};
+
+/// How a solid's cut faces are dressed when it carries attributes (attribute_transfer.h).
+struct CutFaceOptions {
+  double uv_scale = 0.0;                 ///< metres per UV unit on cut faces; 0: the default
+  std::optional<MaterialSlot> interior;  ///< the interior material; none: "interior", mid grey
 };
 
 /// A validated input solid.
@@ -28,14 +35,23 @@ struct Solid {
 };
 
 /// Reads `path` (.off or .obj), repairs it per `repair`, validates it as a solid and measures it.
-/// Errors name the file.
-Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair = SolidRepair::repair);
+/// Errors name the file. `cut` as for make_solid.
+Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair = SolidRepair::repair,
+                         const CutFaceOptions& cut = {});
 
 /// Repairs (per `repair`), validates and measures an in-memory mesh; `what` names it in errors. Every
 /// input solid of the harness (mesh files and case meshes alike) passes here: a mesh outside the
 /// representable range (representable_range.h) is refused before it is measured. A mesh that passes
 /// the acceptance rule (validate_solid) is never repaired; one that fails it is repaired, and the
 /// repaired mesh must pass the rule in turn.
-Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair = SolidRepair::repair);
+///
+/// A mesh with attributes (normals, UVs, tangents, materials) keeps them: a repaired mesh gets them
+/// by transfer_attributes (attribute_transfer.h: surface faces from the input triangle they lie on,
+/// faces repair added dressed by the planar rule in the material around them); then
+/// prepare_cut_faces adds `cut`'s interior material and sets its cut-face UV scale (0 takes the
+/// default, the largest side of the solid's box). Attributes that are not finite are refused with the
+/// triangle named.
+Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair = SolidRepair::repair,
+                         const CutFaceOptions& cut = {});
 
 }  // namespace shatter

@@ -38,6 +38,7 @@ struct AccuracyOptions {
   std::vector<int> resolutions = {8, 16, 32};
   std::vector<int> slabs = {8, 16, 32, 64};
   bool no_repair = false;
+  double cap_uv_scale = 0.0;  // 0: the case's
 };
 
 bool wants(const std::vector<std::string>& families, const char* family) {
@@ -74,6 +75,7 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
     Result<Case> c = find_case(name);
     if (!c) return fail_input("--case: " + c.error().message);
     if (o.no_repair) refuse_repair(*c);
+    if (o.cap_uv_scale > 0.0) set_cap_uv_scale(*c, o.cap_uv_scale);
     cases.push_back(std::move(*c));
   }
   const std::filesystem::path json_path = o.json;
@@ -147,6 +149,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& regis
   cmd->add_option("--case", o->cases, "Case files or built-in names (default: elephant wall cantilever column fixed-beam)");
   cmd->add_option("--json", o->json, "Write the accuracy results JSON here (docs/results.md)");
   cmd->add_flag("--no-repair", o->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
+  add_cap_uv_scale_option(cmd, o->cap_uv_scale);
   cmd->add_option("--repetitions", o->repetitions,
                   "Timed runs per fracture point (stress points: 10 x); the median is reported")
       ->check(CLI::Range(1, kMaxRepetitions))

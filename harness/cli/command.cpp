@@ -1,5 +1,7 @@
 #include "harness/cli/command.h"
 
+#include "harness/limits.h"
+
 #include <cstdio>
 #include <string>
 
@@ -19,6 +21,20 @@ void print_line(const char* prefix, std::string_view message) {
 int fail_input(std::string_view message) {
   print_line("error", message);
   return exit_bad_input;
+}
+
+void add_cap_uv_scale_option(CLI::App* cmd, double& out) {
+  cmd->add_option("--cap-uv-scale", out,
+                  "Metres per UV unit on cut faces of a solid with attributes (default: the case's, else the "
+                  "largest side of the solid's box)")
+      ->check(CLI::Validator(
+          [](const std::string& text) {
+            double value = 0.0;
+            return CLI::detail::lexical_cast(text, value) && value >= kLengthRange.min && value <= kLengthRange.max
+                       ? std::string()
+                       : "must be a length in [1e-06, 1e+06] m, got " + text;
+          },
+          "METRES"));
 }
 
 int fail_check(std::string_view message) {

@@ -26,6 +26,10 @@ int fail_check(std::string_view message);
 /// line each; "<subject>: " left out when `subject` is empty) and returns the number of lines printed.
 int print_failed_checks(std::string_view subject, const std::vector<std::string>& failed);
 
+/// Adds `--cap-uv-scale METRES` (metres per UV unit on cut faces of an attributed solid; a length in
+/// the case-file range) to `cmd`, stored in `out` (0 when absent: the case's or the default scale).
+void add_cap_uv_scale_option(CLI::App* cmd, double& out);
+
 /// Commands that create plugins take the registries they look them up in (kept by reference: they
 /// must outlive the app's parse).
 /// `shatterbench list`.

@@ -5,6 +5,7 @@
 #include "harness/output/output_targets.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
+#include "harness/results/attribute_metrics_json.h"
 #include "harness/results/fragment_writer.h"
 #include "harness/results/input_solid_json.h"
 
@@ -28,11 +29,13 @@ struct FractureOptions {
   std::vector<double> impact;  // x, y, z; empty: no impact
   double radius = 0.0;
   bool no_repair = false;
+  double cap_uv_scale = 0.0;  // 0: the default
 };
 
 int run_fracture(const FractureOptions& o, const Registries& registries) {
   if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
-  Result<Solid> solid = load_solid(o.mesh, o.no_repair ? SolidRepair::refuse : SolidRepair::repair);
+  Result<Solid> solid = load_solid(o.mesh, o.no_repair ? SolidRepair::refuse : SolidRepair::repair,
+                                   CutFaceOptions{.uv_scale = o.cap_uv_scale, .interior = {}});
   if (!solid) return fail_input(solid.error().message);
   Result<std::unique_ptr<Fracturer>> fracturer = registries.fracturers.create(o.algorithm);
   if (!fracturer) return fail_input("--algo: " + fracturer.error().message);
@@ -53,6 +56,7 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
   const double time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
 
   const FractureMetrics m = fracture_metrics(solid->mesh, solid->mass, *fragments, o.fragments);
+  const AttributeMetrics a = attribute_metrics(solid->mesh, *fragments);
   if (!o.out.empty()) {
     if (Status s = write_fragments(o.out, *fragments); !s) return fail_input(s.error().message);
   }
@@ -71,11 +75,13 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
         {"partition_error", m.partition_error},
         {"partition_samples", m.partition_samples},
         {"area_error", m.area_error},
-        {"min_fragment_volume", m.min_fragment_volume}}},
+        {"min_fragment_volume", m.min_fragment_volume},
+        {"attributes", attribute_metrics_json(a)}}},
   };
   std::cout << out.dump(2) << '\n';
   // The result is printed either way; a result its own figures call invalid is not a success.
-  const std::vector<std::string> failed = failed_fracture_checks(m);
+  std::vector<std::string> failed = failed_fracture_checks(m);
+  for (std::string& check : failed_attribute_checks(a)) failed.push_back(std::move(check));
   return print_failed_checks(o.mesh, failed) > 0 ? exit_gate_failed : exit_ok;
 }
 
@@ -87,6 +93,7 @@ void add_fracture_command(CLI::App& app, int& exit_code, const Registries& regis
   cmd->add_option("--mesh", options->mesh, "Input mesh (.off or .obj); repaired into a solid when it is not one")
       ->required();
   cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh that is not a solid instead of repairing it");
+  add_cap_uv_scale_option(cmd, options->cap_uv_scale);
   cmd->add_option("--algo", options->algorithm, "Fracturer name (see `shatterbench list`)")
       ->capture_default_str();
   cmd->add_option("--fragments", options->fragments, "Requested fragment count")

@@ -60,6 +60,7 @@ struct GridCommandOptions {
   double latency_budget_ms = 50.0;
   std::optional<double> timeout_s;
   bool no_repair = false;
+  double cap_uv_scale = 0.0;  // 0: the case's
 };
 
 /// "K/N" -> (K, N); false when malformed.
@@ -136,6 +137,7 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   if (o.same_seed) argv.push_back("--same-seed");
   if (o.no_cache) argv.push_back("--no-cache");
   if (o.no_repair) argv.push_back("--no-repair");
+  if (o.cap_uv_scale > 0.0) add("--cap-uv-scale", fmt::format("{}", o.cap_uv_scale));
   if (!o.cache_dir.empty()) add("--cache-dir", o.cache_dir);
   if (!o.shard.empty()) add("--shard", o.shard);
   if (!o.schedule.empty()) add("--schedule", o.schedule);
@@ -173,6 +175,7 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
   if (o.no_repair) refuse_repair(*c);
+  if (o.cap_uv_scale > 0.0) set_cap_uv_scale(*c, o.cap_uv_scale);
 
   GridOptions options;
   options.fracturer = o.fracturer;
@@ -348,6 +351,7 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
                                                "$XDG_CACHE_HOME/shatterbench or ~/.cache/shatterbench)");
   cmd->add_flag("--no-cache", o->no_cache, "Do not read or write the pre-fracture cache");
   cmd->add_flag("--no-repair", o->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
+  add_cap_uv_scale_option(cmd, o->cap_uv_scale);
   cmd->add_flag("--update-baseline", o->update_baseline,
                 "Write the results as the case's baseline (BASELINE-DIR/<case>.json, or --json); the only way a baseline changes");
   cmd->add_option("--baseline-dir", o->baseline_dir, "Baseline folder (default results/baselines)");

@@ -21,6 +21,7 @@ struct StressOptions {
   std::string model;  // empty: the case's model
   bool json = false;
   bool no_repair = false;
+  double cap_uv_scale = 0.0;  // 0: the case's
 };
 
 nlohmann::ordered_json vec_json(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
@@ -87,6 +88,7 @@ int run_stress(const StressOptions& o, const Registries& registries) {
   Result<Case> c = find_case(o.case_name);
   if (!c) return fail_input(c.error().message);
   if (o.no_repair) refuse_repair(*c);
+  if (o.cap_uv_scale > 0.0) set_cap_uv_scale(*c, o.cap_uv_scale);
   CaseOverrides over;
   over.stress_model = o.model;
   const std::string model_name = resolve_settings(*c, over).stress_model;
@@ -119,6 +121,7 @@ void add_stress_command(CLI::App& app, int& exit_code, const Registries& registr
   cmd->add_option("--model", options->model, "Stress model (default: the case's stress.model)");
   cmd->add_flag("--json", options->json, "Print one JSON object instead of a table");
   cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
+  add_cap_uv_scale_option(cmd, options->cap_uv_scale);
   cmd->callback([options, &exit_code, &registries] { exit_code = run_stress(*options, registries); });
 }
 

@@ -28,6 +28,7 @@ struct TableOptions {
   std::vector<int> fragments = {5, 25, 100};
   int repetitions = 3;
   bool no_repair = false;
+  double cap_uv_scale = 0.0;  // 0: the default
 };
 
 double median(std::vector<double> v) {
@@ -46,7 +47,8 @@ int run_table(TableOptions o, const Registries& r) {
   }
   std::vector<Solid> solids;
   for (const std::string& path : o.meshes) {
-    Result<Solid> s = load_solid(path, o.no_repair ? SolidRepair::refuse : SolidRepair::repair);
+    Result<Solid> s = load_solid(path, o.no_repair ? SolidRepair::refuse : SolidRepair::repair,
+                                 CutFaceOptions{.uv_scale = o.cap_uv_scale, .interior = {}});
     if (!s) return fail_input(s.error().message);
     solids.push_back(std::move(*s));
   }
@@ -128,6 +130,7 @@ void add_table_command(CLI::App& app, int& exit_code, const Registries& registri
   cmd->add_option("--mesh", options->meshes, "Input meshes (.off or .obj); repaired into solids when they are not")
       ->required();
   cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh that is not a solid instead of repairing it");
+  add_cap_uv_scale_option(cmd, options->cap_uv_scale);
   cmd->add_option("--algo", options->algorithms, "Fracturers (default: every registered one)");
   cmd->add_option("--fragments", options->fragments, "Requested fragment counts")
       ->check(CLI::Range(1, kMaxFragments))

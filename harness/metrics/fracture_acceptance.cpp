@@ -17,4 +17,16 @@ std::vector<std::string> failed_fracture_checks(const FractureMetrics& m, const 
   return failed;
 }
 
+std::vector<std::string> failed_attribute_checks(const AttributeMetrics& a, const FractureAcceptance& acceptance) {
+  std::vector<std::string> failed;
+  if (!a.measured) return failed;
+  const double limit = acceptance.max_attribute_error;
+  if (!(a.uv_error <= limit)) failed.push_back(fmt::format("uv_error {:.6g} > {:g}", a.uv_error, limit));
+  if (!(a.normal_error <= limit)) failed.push_back(fmt::format("normal_error {:.6g} > {:g}", a.normal_error, limit));
+  if (!(a.cap_normal_error <= limit))
+    failed.push_back(fmt::format("cap_normal_error {:.6g} > {:g}", a.cap_normal_error, limit));
+  if (a.material_errors > 0) failed.push_back(fmt::format("material_errors: {} faces", a.material_errors));
+  return failed;
+}
+
 }  // namespace shatter

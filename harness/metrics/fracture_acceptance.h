@@ -8,6 +8,7 @@
 /// negative fragment, a missing or doubled one: errors of order 1), so a failed check is a real
 /// defect, not noise.
 
+#include "harness/metrics/attribute_metrics.h"
 #include "harness/metrics/fracture_metrics.h"
 
 #include <string>
@@ -23,6 +24,10 @@ struct FractureAcceptance {
   /// or several fragments (dimensionless). 1 % tolerates a point that round-off places on a cut at
   /// the smallest sample counts the harness uses (100), never a missing or doubled fragment.
   double max_partition_error = 0.01;
+  /// Largest UV, normal and cap normal error accepted (attribute_metrics.h; UV units and unit-vector
+  /// distances). Exact interpolation gives round-off, about 1e-15; a corner mixed at a wrong
+  /// parameter or a wrong source gives errors of the size of a texel (1/4096 = 2.4e-4) or more.
+  double max_attribute_error = 1e-6;
 };
 
 /// The checks `m` fails, one line each without a trailing newline, for example
@@ -30,5 +35,9 @@ struct FractureAcceptance {
 /// every check holds: every fragment valid (all_closed), at least one fragment, volume and
 /// partition errors within `acceptance`.
 std::vector<std::string> failed_fracture_checks(const FractureMetrics& m, const FractureAcceptance& acceptance = {});
+
+/// The attribute checks `a` fails, in the same form ("uv_error 0.01 > 1e-06",
+/// "material_errors: 3 faces"); empty when the input carried no attributes or every check holds.
+std::vector<std::string> failed_attribute_checks(const AttributeMetrics& a, const FractureAcceptance& acceptance = {});
 
 }  // namespace shatter

@@ -1,5 +1,6 @@
 #include "harness/metrics/fracture_metrics.h"
 
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/random.h"
 #include "algorithms/core/shell_classification.h"
@@ -37,6 +38,7 @@ std::string fragment_problem(const Fragment& fragment) {
   const ShellClassification shells = classify_shells(fragment.mesh);
   if (shells.verdict == SolidVerdict::invalid) return shells.reason;
   if (shells.inverted) return "faces inward";
+  if (Status s = check_attributes(fragment.mesh, "attributes"); !s) return s.error().message;
   return {};
 }
 

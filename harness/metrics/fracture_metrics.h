@@ -36,7 +36,8 @@ struct FractureMetrics {
   double volume_error = 0.0;
   /// Every fragment is non-empty, finite, closed and consistently oriented, with positive volume,
   /// and its shells form a solid (classify_shells: outward shells that neither cross nor nest with
-  /// one orientation; cavities allowed). True for an empty fragment list.
+  /// one orientation; cavities allowed), and its attributes are consistent (check_attributes). True
+  /// for an empty fragment list.
   bool all_closed = true;
   /// Why the first invalid fragment fails all_closed ("fragment 3: not closed and consistently
   /// oriented"), empty when all_closed.

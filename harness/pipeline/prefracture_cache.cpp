@@ -1,5 +1,6 @@
 #include "harness/pipeline/prefracture_cache.h"
 
+#include "algorithms/core/attribute_transfer.h"
 #include "harness/limits.h"
 #include "harness/output/atomic_file.h"
 
@@ -24,7 +25,8 @@ namespace shatter {
 namespace {
 
 // Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss).
-constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '2'};
+// Version 3 keys on the solid's attributes too and stores each fragment's per-face attribute values.
+constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '3'};
 
 /// FNV-1a, 64 bit, fed field by field.
 class Fnv1a {
@@ -77,6 +79,25 @@ std::uint64_t key_hash(const Mesh& solid, const PrefractureKey& key) {
   h.value(solid.triangles.size());
   for (const Triangle& t : solid.triangles) h.bytes(t.data(), 3 * sizeof(std::int32_t));
   for (const FaceTag t : solid.tags) h.value(t);
+  // The attributes: a dressed solid and the same geometry without attributes are different entries.
+  const MeshAttributes& a = solid.attributes;
+  h.value(a.layout.normals);
+  h.value(a.layout.uv_sets);
+  h.value(a.layout.tangents);
+  h.value(a.corners.size());
+  h.bytes(a.corners.data(), a.corners.size() * sizeof(double));
+  h.value(a.materials.size());
+  h.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
+  h.value(a.slots.size());
+  for (const MaterialSlot& s : a.slots) {
+    h.text(s.name);
+    h.bytes(s.base_color.data(), s.base_color.size() * sizeof(double));
+    h.text(s.base_color_texture);
+    h.value(s.base_color_image ? s.base_color_image->bytes.size() : std::size_t{0});
+    if (s.base_color_image) h.bytes(s.base_color_image->bytes.data(), s.base_color_image->bytes.size());
+  }
+  h.value(a.cut.material);
+  h.value(a.cut.uv_scale);
   h.text(key.fracturer);
   h.value(key.fragments);
   h.value(key.seed);
@@ -239,10 +260,23 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
     for (Vec3& v : f.mesh.vertices) r.bytes(v.data(), 3 * sizeof(double));
     for (Triangle& t : f.mesh.triangles) r.bytes(t.data(), 3 * sizeof(std::int32_t));
     r.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
+    // Attribute values per face; the frame (layout, slots, cut style) is the solid's.
+    const auto corner_values = r.value<std::uint64_t>();
+    const auto materials = r.value<std::uint64_t>();
+    if (!r.ok() || corner_values > r.left() / sizeof(double) || materials > r.left() / sizeof(std::int32_t))
+      return std::nullopt;
+    if (corner_values > 0 || materials > 0) {
+      copy_attribute_frame(solid, f.mesh);
+      f.mesh.attributes.corners.resize(static_cast<std::size_t>(corner_values));
+      f.mesh.attributes.materials.resize(static_cast<std::size_t>(materials));
+      r.bytes(f.mesh.attributes.corners.data(), f.mesh.attributes.corners.size() * sizeof(double));
+      r.bytes(f.mesh.attributes.materials.data(), f.mesh.attributes.materials.size() * sizeof(std::int32_t));
+    }
     r.bytes(&f.mass.volume, sizeof(double));
     r.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     r.bytes(f.mass.inertia.data(), 9 * sizeof(double));
-    if (!r.ok() || !plausible(f)) return std::nullopt;
+    if (!r.ok() || !plausible(f) || f.mesh.attributes.empty() != solid.attributes.empty()) return std::nullopt;
+    if (!check_attributes(f.mesh, "cache")) return std::nullopt;
     for (const Triangle& t : f.mesh.triangles)
       for (const std::int32_t i : t)
         if (i < 0 || static_cast<std::uint64_t>(i) >= nv) return std::nullopt;
@@ -265,6 +299,10 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
     for (const Vec3& v : f.mesh.vertices) w.bytes(v.data(), 3 * sizeof(double));
     for (const Triangle& t : f.mesh.triangles) w.bytes(t.data(), 3 * sizeof(std::int32_t));
     w.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
+    w.value(static_cast<std::uint64_t>(f.mesh.attributes.corners.size()));
+    w.value(static_cast<std::uint64_t>(f.mesh.attributes.materials.size()));
+    w.bytes(f.mesh.attributes.corners.data(), f.mesh.attributes.corners.size() * sizeof(double));
+    w.bytes(f.mesh.attributes.materials.data(), f.mesh.attributes.materials.size() * sizeof(std::int32_t));
     w.bytes(&f.mass.volume, sizeof(double));
     w.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     w.bytes(f.mass.inertia.data(), 9 * sizeof(double));

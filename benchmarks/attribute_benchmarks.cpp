@@ -1,0 +1,112 @@
+// Google Benchmark: what carrying attributes costs each fracturer. The same solid is fractured with
+// the same seed twice: once as geometry only and once dressed as a textured asset (flat normals, one
+// box-mapped UV set, tangents, a surface and an interior material: surface_mapping.h), so the two rows
+// of a pair differ only by the attribute work. The attributed row carries its attribute error figures.
+//
+//   build/bin/shatter_benchmarks --benchmark_filter='^attributes/' --benchmark_repetitions=5
+// Rows: attributes/<mesh>/<fracturer>/{geometry,attributes}/<n>. Compare the medians of a pair.
+
+#include "algorithms/core/attribute_transfer.h"
+#include "algorithms/core/self_intersection_verdicts.h"
+#include "algorithms/core/surface_mapping.h"
+#include "harness/cases/load_solid.h"
+#include "harness/metrics/attribute_metrics.h"
+#include "benchmarks/benchmark_families.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace shatter;
+
+namespace {
+
+std::filesystem::path attribute_mesh_dir() {
+  if (const char* env = std::getenv("SHATTER_MESH_DIR")) return env;
+  return std::filesystem::path(SHATTER_SOURCE_DIR) / "data" / "meshes";
+}
+
+/// `solid` dressed as a textured asset: box mapping at a tenth of its size per UV unit.
+Mesh dressed(const Solid& solid) {
+  Mesh mesh = solid.mesh;
+  MaterialSlot brick;
+  brick.name = "brick";
+  apply_box_mapping(mesh, default_cut_uv_scale(mesh) / 10.0, brick);
+  prepare_cut_faces(mesh);
+  return mesh;
+}
+
+void fracture_pair(benchmark::State& state, const Registries& registries, const Mesh& mesh,
+                   const std::string& algorithm, int n) {
+  auto fracturer = registries.fracturers.create(algorithm);
+  if (!fracturer) {
+    state.SkipWithError(fracturer.error().message.c_str());
+    return;
+  }
+  FractureParams params;
+  params.fragments = n;
+  params.seed = 1;
+  SelfIntersectionVerdicts verdicts;  // the input check once, as in a game's repeated fractures
+  params.verdicts = &verdicts;
+  std::vector<Fragment> fragments;
+  for (auto _ : state) {
+    auto out = (*fracturer)->fracture(mesh, params);
+    if (!out) {
+      state.SkipWithError(out.error().message.c_str());
+      return;
+    }
+    fragments = std::move(*out);
+    benchmark::DoNotOptimize(fragments.data());
+  }
+  state.counters["triangles"] = static_cast<double>(mesh.triangle_count());
+  state.counters["fragments"] = static_cast<double>(fragments.size());
+  const AttributeMetrics a = attribute_metrics(mesh, fragments);
+  if (!a.measured) return;
+  state.counters["uv_error"] = a.uv_error;
+  state.counters["normal_error"] = a.normal_error;
+  state.counters["cap_normal_error"] = a.cap_normal_error;
+  state.counters["material_errors"] = a.material_errors;
+}
+
+}  // namespace
+
+namespace shatter {
+
+void register_attribute_benchmarks(const Registries& registries) {
+  struct Pair {
+    std::string name;
+    Mesh geometry;
+    Mesh attributes;
+  };
+  static std::vector<Pair> pairs;
+  for (const std::string name : {"elephant.off", "homer.off"}) {
+    Result<Solid> solid = load_solid(attribute_mesh_dir() / name);
+    if (!solid) {
+      std::cerr << "shatter_benchmarks: skipping " << name << ": " << solid.error().message << "\n";
+      continue;
+    }
+    pairs.push_back({name, solid->mesh, dressed(*solid)});
+  }
+  const Registries* reg = &registries;
+  for (const Pair& pair : pairs) {
+    for (const std::string& algo : registries.fracturers.names()) {
+      for (const int n : {5, 25}) {
+        for (const bool attributed : {false, true}) {
+          const Mesh* mesh = attributed ? &pair.attributes : &pair.geometry;
+          const std::string row = "attributes/" + pair.name + "/" + algo + "/" +
+                                  (attributed ? "attributes/" : "geometry/") + std::to_string(n);
+          benchmark::RegisterBenchmark(row.c_str(), [reg, mesh, algo, n](benchmark::State& st) {
+            fracture_pair(st, *reg, *mesh, algo, n);
+          })->Unit(benchmark::kMillisecond);
+        }
+      }
+    }
+  }
+}
+
+}  // namespace shatter
