@@ -66,14 +66,15 @@ void check_caps(const Mesh& piece, AttributeMetrics& m) {
     if (!attr.materials.empty() && attr.materials[f] != attr.cut.material) ++m.material_errors;
     if (!attr.layout.normals) continue;
     const double* n = attr.corner(f, 0) + AttributeLayout::normal_offset();
-    cap_normal[{n[0], n[1], n[2]}] += (corner_position(piece, f, 1) - corner_position(piece, f, 0))
+    // try_emplace: a default Eigen vector is not zero.
+    cap_normal.try_emplace({n[0], n[1], n[2]}, Vec3::Zero()).first->second += (corner_position(piece, f, 1) - corner_position(piece, f, 0))
                                           .cross(corner_position(piece, f, 2) - corner_position(piece, f, 0));
   }
   if (!attr.layout.normals) return;
   for (std::size_t f = 0; f < piece.triangles.size(); ++f) {
     if (piece.tags[f] != FaceTag::cut) continue;
     const double* first = attr.corner(f, 0) + AttributeLayout::normal_offset();
-    const Vec3 plane = unit(cap_normal[{first[0], first[1], first[2]}]);
+    const Vec3 plane = unit(cap_normal.at({first[0], first[1], first[2]}));
     for (int k = 0; k < 3; ++k) {
       const double* n = attr.corner(f, k) + AttributeLayout::normal_offset();
       m.cap_normal_error = std::max(m.cap_normal_error, (unit(Vec3(n[0], n[1], n[2])) - plane).norm());
