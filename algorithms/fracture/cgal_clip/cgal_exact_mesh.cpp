@@ -98,10 +98,13 @@ Vec3 exact_normal(const ExactPoint& a, const ExactPoint& b, const ExactPoint& c)
   const auto n = CGAL::cross_product(CGAL::exact(b) - ea, CGAL::exact(c) - ea);
   // Scaled exactly so that its largest component is +-1 before rounding: no underflow for tiny faces.
   ExactValue largest = CGAL::abs(n.x());
-  if (CGAL::abs(n.y()) > largest) largest = CGAL::abs(n.y());
-  if (CGAL::abs(n.z()) > largest) largest = CGAL::abs(n.z());
+  for (const ExactValue& c : {ExactValue(CGAL::abs(n.y())), ExactValue(CGAL::abs(n.z()))})
+    if (c > largest) largest = c;
   if (largest == 0) throw ClipFailure("a cut face has no area");
-  const Vec3 scaled(CGAL::to_double(n.x() / largest), CGAL::to_double(n.y() / largest), CGAL::to_double(n.z() / largest));
+  const ExactValue x = n.x() / largest;
+  const ExactValue y = n.y() / largest;
+  const ExactValue z = n.z() / largest;
+  const Vec3 scaled(CGAL::to_double(x), CGAL::to_double(y), CGAL::to_double(z));
   return scaled.normalized();
 }
 

@@ -7,6 +7,7 @@
 #include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/primitives.h"
 #include "algorithms/core/solid_check.h"
+#include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "tests/support/builtin_registries.h"
 
 #include <catch2/catch.hpp>
@@ -98,6 +99,57 @@ void check_same_geometry(const std::vector<Fragment>& with, const std::vector<Fr
   }
 }
 
+/// Checks the attributes of fragments of `box` (attributed_box with `uv`): surface corners carry the
+/// affine UVs at their positions and the box's face normal and keep the slot "brick"; cut faces carry
+/// their own unit outward normal and the interior slot. Returns the number of cut faces.
+int check_box_fragments(const std::vector<Fragment>& fragments, const Mesh& box, const AffineUv& uv) {
+  const std::int32_t interior = box.attributes.cut.material;
+  // 1e-12 of the UVs' magnitude over the box (|coefficient| x extent + |offset| is at most about 4).
+  const double uv_tolerance = 1e-12 * 4.0;
+  int cut_faces = 0;
+  for (std::size_t i = 0; i < fragments.size(); ++i) {
+    const Mesh& m = fragments[i].mesh;
+    INFO("fragment " << i);
+    const Status s = check_attributes(m, "fragment");
+    CHECK(s.ok());
+    if (!s) WARN(s.error().message);
+    REQUIRE(m.attributes.layout == box.attributes.layout);
+    REQUIRE(m.attributes.slots == box.attributes.slots);
+    REQUIRE(m.attributes.materials.size() == m.triangles.size());
+    for (std::size_t f = 0; f < m.triangles.size(); ++f) {
+      INFO("triangle " << f);
+      const Vec3 g = geometric_normal(m, f);
+      if (m.tags[f] == FaceTag::cut) {
+        ++cut_faces;
+        CHECK(m.attributes.materials[f] == interior);
+        for (int k = 0; k < 3; ++k) {
+          const double* c = m.attributes.corner(f, k);
+          const Vec3 normal(c[0], c[1], c[2]);
+          CHECK(std::abs(normal.norm() - 1.0) <= 1e-9);
+          CHECK((normal - g).norm() <= 1e-9);
+        }
+        continue;
+      }
+      CHECK(m.tags[f] == FaceTag::surface);
+      CHECK(m.attributes.materials[f] == kBrick);
+      // The box face a surface triangle lies on: the axis its geometric normal points along.
+      int axis = 0;
+      for (int j = 1; j < 3; ++j)
+        if (std::abs(g[j]) > std::abs(g[axis])) axis = j;
+      Vec3 face_normal = Vec3::Zero();
+      face_normal[axis] = g[axis] > 0.0 ? 1.0 : -1.0;
+      for (int k = 0; k < 3; ++k) {
+        const Vec3& p = m.vertices[static_cast<std::size_t>(m.triangles[f][k])];
+        const double* c = m.attributes.corner(f, k);
+        CHECK((Vec3(c[0], c[1], c[2]) - face_normal).norm() <= 1e-12);
+        CHECK((Vec2(c[3], c[4]) - uv.uv0(p)).norm() <= uv_tolerance);
+        CHECK((Vec2(c[5], c[6]) - uv.uv1(p)).norm() <= uv_tolerance);
+      }
+    }
+  }
+  return cut_faces;
+}
+
 }  // namespace
 
 TEST_CASE("attributes: every fracturer carries affine UVs, normals and materials exactly", "[attributes][conformance]") {
@@ -107,10 +159,7 @@ TEST_CASE("attributes: every fracturer carries affine UVs, normals and materials
   const Mesh plain = make_box(size, centre);
   const Mesh box = attributed_box(plain, uv);
   REQUIRE(check_attributes(box, "box").ok());
-  const std::int32_t interior = box.attributes.cut.material;
-  REQUIRE(interior == 1);
-  // 1e-12 of the UVs' magnitude over the box (|coefficient| x extent + |offset| is at most about 4).
-  const double uv_tolerance = 1e-12 * 4.0;
+  REQUIRE(box.attributes.cut.material == 1);
 
   const Registries r = test::builtin_registries();
   for (const std::string& name : r.fracturers.names()) {
@@ -127,47 +176,7 @@ TEST_CASE("attributes: every fracturer carries affine UVs, normals and materials
         Result<std::vector<Fragment>> geometry = (*fracturer)->fracture(plain, params);
         REQUIRE(geometry.ok());
         check_same_geometry(*fragments, *geometry);
-        int cut_faces = 0;
-        for (std::size_t i = 0; i < fragments->size(); ++i) {
-          const Mesh& m = (*fragments)[i].mesh;
-          INFO("fragment " << i);
-          const Status s = check_attributes(m, "fragment");
-          CHECK(s.ok());
-          if (!s) WARN(s.error().message);
-          REQUIRE(m.attributes.layout == box.attributes.layout);
-          REQUIRE(m.attributes.slots == box.attributes.slots);
-          REQUIRE(m.attributes.materials.size() == m.triangles.size());
-          for (std::size_t f = 0; f < m.triangles.size(); ++f) {
-            INFO("triangle " << f);
-            const Vec3 g = geometric_normal(m, f);
-            if (m.tags[f] == FaceTag::cut) {
-              ++cut_faces;
-              CHECK(m.attributes.materials[f] == interior);
-              for (int k = 0; k < 3; ++k) {
-                const double* c = m.attributes.corner(f, k);
-                const Vec3 normal(c[0], c[1], c[2]);
-                CHECK(std::abs(normal.norm() - 1.0) <= 1e-9);
-                CHECK((normal - g).norm() <= 1e-9);
-              }
-              continue;
-            }
-            CHECK(m.tags[f] == FaceTag::surface);
-            CHECK(m.attributes.materials[f] == kBrick);
-            // The box face a surface triangle lies on: the axis its geometric normal points along.
-            int axis = 0;
-            for (int j = 1; j < 3; ++j)
-              if (std::abs(g[j]) > std::abs(g[axis])) axis = j;
-            Vec3 face_normal = Vec3::Zero();
-            face_normal[axis] = g[axis] > 0.0 ? 1.0 : -1.0;
-            for (int k = 0; k < 3; ++k) {
-              const Vec3& p = m.vertices[static_cast<std::size_t>(m.triangles[f][k])];
-              const double* c = m.attributes.corner(f, k);
-              CHECK((Vec3(c[0], c[1], c[2]) - face_normal).norm() <= 1e-12);
-              CHECK((Vec2(c[3], c[4]) - uv.uv0(p)).norm() <= uv_tolerance);
-              CHECK((Vec2(c[5], c[6]) - uv.uv1(p)).norm() <= uv_tolerance);
-            }
-          }
-        }
+        const int cut_faces = check_box_fragments(*fragments, box, uv);
         if (n > 1 && fragments->size() > 1) CHECK(cut_faces > 0);
       }
     }
@@ -214,4 +223,24 @@ TEST_CASE("attributes: a cylinder with a UV seam breaks as it does without attri
       check_same_geometry(*with, *without);
     }
   }
+}
+
+TEST_CASE("attributes: cgal-clip's exact cells carry the box's attributes", "[attributes][cgal-cells]") {
+  const AffineUv uv;
+  const Mesh plain = make_box(Vec3(2.0, 3.0, 1.5), Vec3(0.3, -0.2, 0.1));
+  const Mesh box = attributed_box(plain, uv);
+  // The bisector cells of a few sites inside the box.
+  const std::vector<Vec3> sites{{0.9, 1.0, 0.5}, {-0.4, -1.3, 0.6}, {0.5, 0.2, -0.3}, {-0.1, 0.9, 0.2}, {1.0, -1.0, -0.4}};
+  std::vector<ConvexCell> cells(sites.size());
+  for (std::size_t i = 0; i < sites.size(); ++i)
+    for (std::size_t j = 0; j < sites.size(); ++j)
+      if (i != j) cells[i].planes.push_back({0.5 * (sites[i] + sites[j]), sites[j] - sites[i]});
+  const CgalClipFracturer fracturer;
+  Result<std::vector<Fragment>> with = fracturer.fracture_by_cells(box, cells);
+  Result<std::vector<Fragment>> without = fracturer.fracture_by_cells(plain, cells);
+  REQUIRE(with.ok());
+  REQUIRE(without.ok());
+  REQUIRE(with->size() == sites.size());
+  check_same_geometry(*with, *without);
+  CHECK(check_box_fragments(*with, box, uv) > 0);
 }
