@@ -17,9 +17,11 @@ Mesh affine_triangle() {
   m.add_vertex(Vec3(0, 1, 0));
   m.add_triangle(0, 1, 2, FaceTag::cut);
   m.attributes.layout.uv_sets = 1;
-  m.attributes.slots.resize(2);
-  m.attributes.slots[0].name = "a";
-  m.attributes.slots[1].name = "b";
+  MaterialSlot a;
+  a.name = "a";
+  MaterialSlot b;
+  b.name = "b";
+  m.attributes.slots = {a, b};
   m.attributes.materials = {1};
   for (const Vec3& p : m.vertices) m.attributes.corners.insert(m.attributes.corners.end(), {2 * p.x() - p.y() + 0.5, 3 * p.y() + 1});
   prepare_cut_faces(m);
