@@ -105,6 +105,7 @@ class CellClipper {
   int vertex_side(std::int32_t v, int plane);
   int corner_side(const PolygonCorner& c, int plane);
   PolygonCorner crossing(const PolygonCorner& a, int side_a, const PolygonCorner& b, int plane);
+  /// Where plane `plane` crosses the segment from ref `pos` (beyond it) to ref `neg`, in [0, 1].
   double crossing_parameter(std::int32_t pos, std::int32_t neg, int plane) const;
   std::int32_t corner_ref(std::int32_t corner);
   std::int32_t out_index(std::int32_t ref);
