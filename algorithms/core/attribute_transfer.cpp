@@ -68,6 +68,21 @@ void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t 
   }
 }
 
+void add_triangle_weighted(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
+                           const std::array<CornerWeights, 3>& weights) {
+  dst.add_triangle(a, b, c, src.tags[f]);
+  if (src.attributes.empty()) return;
+  copy_material(dst, src, f);
+  const std::size_t n = stride_of(src.attributes);
+  if (n == 0) return;
+  const double* v0 = src.attributes.corner(f, 0);
+  const double* v1 = src.attributes.corner(f, 1);
+  const double* v2 = src.attributes.corner(f, 2);
+  std::vector<double>& out = dst.attributes.corners;
+  for (const CornerWeights& w : weights)
+    for (std::size_t i = 0; i < n; ++i) out.push_back(w[0] * v0[i] + w[1] * v1[i] + w[2] * v2[i]);
+}
+
 std::array<Vec3, 2> cut_plane_basis(const Vec3& normal) {
   Vec3 n = normal.normalized();
   int largest = 0;

@@ -49,6 +49,15 @@ struct CornerMix {
 void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
                         const std::array<CornerMix, 3>& mix);
 
+/// Barycentric weights of a point over the three corners of its source triangle (they sum to 1).
+using CornerWeights = std::array<double, 3>;
+
+/// Appends triangle (a, b, c) of `dst` cut from triangle `f` of `src`: its tag and material, and
+/// corner i's values as the weighted sum of `f`'s corner values by `weights[i]` (for a corner made by
+/// several cuts in turn, whose weights follow from the parameters its position was made with).
+void add_triangle_weighted(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
+                           const std::array<CornerWeights, 3>& weights);
+
 /// Appends the cut face (a, b, c) of `dst` (tag cut): when `dst` carries attributes, its corners are
 /// dressed by `dst`'s cut-face style with `outward_normal` (any non-zero length) as the plane normal.
 void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c, const Vec3& outward_normal);

@@ -75,7 +75,7 @@ void fracture_cell(const SurfaceMesh& solid, const std::vector<Plane>& planes, c
                    std::vector<Piece>& out) {
   SurfaceMesh part = solid;
   SurfaceMesh clipper = cell.triangle_mesh();
-  TagState state{&part, cut_map(part)};
+  TagState state = tag_state(part);
   ClipTagVisitor visitor;
   visitor.state = &state;
   if (!PMP::corefine_and_compute_intersection(part, clipper, part, CGAL::parameters::visitor(visitor)))
@@ -120,7 +120,7 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_cells(const Mesh& s
     }
     std::vector<Fragment> fragments;
     fragments.reserve(pieces.size());
-    for (Piece& piece : pieces) fragments.push_back(to_fragment(piece));
+    for (Piece& piece : pieces) fragments.push_back(to_fragment(piece, solid));
     return fragments;
   } catch (const std::exception& e) {
     return Error{std::string("cgal-clip: ") + e.what()};

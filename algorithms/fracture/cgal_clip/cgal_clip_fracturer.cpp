@@ -63,7 +63,7 @@ class ExactClipKernel {
   /// Clips a copy of `mesh` to the negative side of `plane` and appends its parts.
   static void clip_into(const SurfaceMesh& mesh, const ExactPlane& plane, std::vector<Piece>& out) {
     SurfaceMesh part = mesh;
-    TagState state{&part, cut_map(part)};
+    TagState state = tag_state(part);
     ClipTagVisitor visitor;
     visitor.state = &state;
     const bool manifold =
@@ -88,7 +88,7 @@ Result<std::vector<Fragment>> run(const Mesh& solid, Schedule&& schedule) {
     std::vector<ExactClipKernel::Piece> pieces = schedule(ExactClipKernel{}, start_pieces(solid));
     std::vector<Fragment> fragments;
     fragments.reserve(pieces.size());
-    for (ExactClipKernel::Piece& piece : pieces) fragments.push_back(to_fragment(piece));
+    for (ExactClipKernel::Piece& piece : pieces) fragments.push_back(to_fragment(piece, solid));
     return fragments;
   } catch (const std::exception& e) {
     return Error{std::string("cgal-clip: ") + e.what()};

@@ -129,6 +129,12 @@ bool CellClipper::settle_corners() {
   return true;
 }
 
+void CellClipper::add_cap_triangle(std::size_t plane, const std::vector<std::int32_t>& refs, const Triangle& t) {
+  // The cell lies on the negative side of each of its planes: the normal points out of the fragment.
+  add_cut_triangle(out_, out_index(refs[static_cast<std::size_t>(t[0])]), out_index(refs[static_cast<std::size_t>(t[1])]),
+                   out_index(refs[static_cast<std::size_t>(t[2])]), planes_[plane].normal);
+}
+
 bool CellClipper::triangulate_caps() {
   std::vector<std::int32_t> refs;
   std::vector<Vec2> points;
@@ -163,9 +169,7 @@ bool CellClipper::triangulate_caps() {
     };
     for (const CapEdge& e : cap_edges_[plane]) edges.push_back({cap_point(e[0]), cap_point(e[1])});
     if (fan_convex_cap(points, edges, fan)) {  // the common case: one convex loop (see convex_cap.h)
-      for (const Triangle& t : fan)
-        out_.add_triangle(out_index(refs[static_cast<std::size_t>(t[0])]), out_index(refs[static_cast<std::size_t>(t[1])]),
-                          out_index(refs[static_cast<std::size_t>(t[2])]), FaceTag::cut);
+      for (const Triangle& t : fan) add_cap_triangle(plane, refs, t);
       continue;
     }
     // Points that round to one position would be merged by the triangulation: refuse.
@@ -181,9 +185,7 @@ bool CellClipper::triangulate_caps() {
     const CapTriangulation cap = triangulate_cap(points, edges);
     if (!cap.ok) return false;
     if (!cap_closes_outline(cap.triangles, edges, halfedges)) return false;
-    for (const Triangle& t : cap.triangles)
-      out_.add_triangle(out_index(refs[static_cast<std::size_t>(t[0])]), out_index(refs[static_cast<std::size_t>(t[1])]),
-                        out_index(refs[static_cast<std::size_t>(t[2])]), FaceTag::cut);
+    for (const Triangle& t : cap.triangles) add_cap_triangle(plane, refs, t);
   }
   return true;
 }

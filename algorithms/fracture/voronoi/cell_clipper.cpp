@@ -15,10 +15,19 @@ bool overlaps(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
 }
 
+/// Weights of a crossing made at parameter `t` from the end beyond the plane (`pos`) towards the
+/// other (`neg`): the same mix as its position.
+CornerWeights mixed_weights(const CornerWeights& pos, const CornerWeights& neg, double t) {
+  return {pos[0] + t * (neg[0] - pos[0]), pos[1] + t * (neg[1] - pos[1]), pos[2] + t * (neg[2] - pos[2])};
+}
+
 }  // namespace
 
 CellClipper::CellClipper(const Mesh& solid, std::span<const Vec3> sites, const PointInMesh* inside)
-    : solid_(&solid), vertex_count_(static_cast<std::int32_t>(solid.vertices.size())), inside_(inside) {
+    : solid_(&solid),
+      vertex_count_(static_cast<std::int32_t>(solid.vertices.size())),
+      attributed_(has_attributes(solid)),
+      inside_(inside) {
   seen_.assign(solid.vertices.size(), 0);
   side_offset_.assign(solid.vertices.size(), 0);
   seen_out_.assign(solid.vertices.size(), 0);
@@ -100,6 +109,7 @@ bool CellClipper::clip(int site, std::span<const Plane> planes, const CellPolyto
   for (auto& edges : cap_edges_) edges.clear();
   edge_points_.clear();
   out_ = Mesh{};
+  if (attributed_) copy_attribute_frame(*solid_, out_);
   // The site's own triangles and the mixed ones near the cell, merged in index order.
   const std::int32_t* owned = owned_.data() + owned_start_[static_cast<std::size_t>(site)];
   const std::int32_t* owned_end = owned_.data() + owned_start_[static_cast<std::size_t>(site) + 1];
@@ -126,7 +136,7 @@ bool CellClipper::clip(int site, std::span<const Plane> planes, const CellPolyto
 
 void CellClipper::copy_triangle(std::size_t f) {
   const Triangle& t = solid_->triangles[f];
-  out_.add_triangle(out_index(t[0]), out_index(t[1]), out_index(t[2]), solid_->tags[f]);
+  add_triangle_from(out_, *solid_, f, out_index(t[0]), out_index(t[1]), out_index(t[2]));
 }
 
 void CellClipper::select_planes(std::span<const Plane> planes, const Aabb& box) {
@@ -207,6 +217,9 @@ CellClipper::PolygonCorner CellClipper::crossing(const PolygonCorner& a, int sid
                                                  int plane) {
   const bool on_solid_edge = a.plane < 0;  // the piece a -> b of one of the triangle's own edges
   PolygonCorner x{-1, -1, -1, -1};
+  // Interpolate from the end beyond the plane, so that either order of a and b gives the same point.
+  const PolygonCorner& pos = side_a > 0 ? a : b;
+  const PolygonCorner& neg = side_a > 0 ? b : a;
   if (on_solid_edge) {
     // The solid edge under a -> b: from whichever end was made on it, else the two solid vertices.
     const PolygonCorner& made = a.edge_u >= 0 ? a : b;
@@ -217,19 +230,16 @@ CellClipper::PolygonCorner CellClipper::crossing(const PolygonCorner& a, int sid
     const auto found = edge_crossings_.find(key);
     if (found != edge_crossings_.end()) {
       x.ref = found->second;
+      // The point was made from the same two ends (the sides agree), so the same parameter gives
+      // its weights in this triangle.
+      if (attributed_) x.weights = mixed_weights(pos.weights, neg.weights, crossing_parameter(pos.ref, neg.ref, plane));
       return x;
     }
   }
-  // Interpolate from the end beyond the plane, so that either order of a and b gives the same point.
-  const PolygonCorner& pos = side_a > 0 ? a : b;
-  const PolygonCorner& neg = side_a > 0 ? b : a;
-  const Plane& p = planes_[static_cast<std::size_t>(plane)];
+  const double t = crossing_parameter(pos.ref, neg.ref, plane);
   const Vec3 pp = position(pos.ref);
   const Vec3 pm = position(neg.ref);
-  const double dp = p.normal.dot(pp - p.point);
-  const double dm = p.normal.dot(pm - p.point);
-  const double denom = dp - dm;
-  const double t = std::clamp(denom > 0 ? dp / denom : 0.5, 0.0, 1.0);
+  if (attributed_) x.weights = mixed_weights(pos.weights, neg.weights, t);
   x.ref = vertex_count_ + static_cast<std::int32_t>(points_.size());
   points_.push_back(pp + t * (pm - pp));
   out_of_point_.push_back(-1);
@@ -237,9 +247,24 @@ CellClipper::PolygonCorner CellClipper::crossing(const PolygonCorner& a, int sid
   return x;
 }
 
+double CellClipper::crossing_parameter(std::int32_t pos, std::int32_t neg, int plane) const {
+  const Plane& p = planes_[static_cast<std::size_t>(plane)];
+  const Vec3& pp = position(pos);
+  const Vec3& pm = position(neg);
+  const double dp = p.normal.dot(pp - p.point);
+  const double dm = p.normal.dot(pm - p.point);
+  const double denom = dp - dm;
+  return std::clamp(denom > 0 ? dp / denom : 0.5, 0.0, 1.0);
+}
+
 bool CellClipper::clip_triangle(std::size_t f) {
   const Triangle& t = solid_->triangles[f];
   polygon_.assign({{t[0], -1}, {t[1], -1}, {t[2], -1}});
+  if (attributed_) {
+    polygon_[0].weights = {1.0, 0.0, 0.0};
+    polygon_[1].weights = {0.0, 1.0, 0.0};
+    polygon_[2].weights = {0.0, 0.0, 1.0};
+  }
   const bool interior = inside_all(t[0]) && inside_all(t[1]) && inside_all(t[2]);
   for (int m = 0; !interior && m < static_cast<int>(planes_.size()); ++m) {
     const int s0 = vertex_side(t[0], m);
@@ -270,9 +295,9 @@ bool CellClipper::clip_triangle(std::size_t f) {
     std::swap(polygon_, clipped_);
   }
   const std::size_t n = polygon_.size();
-  const FaceTag tag = solid_->tags[f];
   for (std::size_t k = 1; k + 1 < n; ++k)
-    out_.add_triangle(out_index(polygon_[0].ref), out_index(polygon_[k].ref), out_index(polygon_[k + 1].ref), tag);
+    add_triangle_weighted(out_, *solid_, f, out_index(polygon_[0].ref), out_index(polygon_[k].ref),
+                          out_index(polygon_[k + 1].ref), {polygon_[0].weights, polygon_[k].weights, polygon_[k + 1].weights});
   for (std::size_t k = 0; k < n; ++k) {
     const PolygonCorner& a = polygon_[k];
     const PolygonCorner& b = polygon_[(k + 1) % n];

@@ -29,7 +29,14 @@
 /// have one owner lies inside that cell (convexity): it is copied into that cell without a side test
 /// and never looked at for the others. Only the other triangles ("mixed") are clipped, each by the
 /// cells whose bounds meet its bounds; their owned corners need no side test either.
+///
+/// Attributes (mesh_attributes.h): every polygon corner carries its barycentric weights over the
+/// source triangle's corners, mixed at each crossing with the same parameter as its position (a corner
+/// may be cut by several planes in turn); a clipped triangle's corner values are those weighted sums,
+/// a copied triangle keeps its values, and cap triangles are dressed as cut faces with their plane's
+/// normal, which points out of the cell. A solid without attributes takes none of this work.
 
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/core/cap_triangulator.h"
@@ -70,6 +77,7 @@ class CellClipper {
     int plane;
     std::int32_t edge_u = -1;  ///< the solid edge the point lies on (-1: a solid vertex or inside)
     std::int32_t edge_w = -1;
+    CornerWeights weights{};   ///< over the source triangle's corners; only kept for attributed solids
   };
   /// Where a clipped triangle passes a cell edge: the point, the plane whose cap edge starts there
   /// ("out") and the plane whose cap edge ends there ("in").
@@ -89,12 +97,16 @@ class CellClipper {
   bool walk_cell_edges();
   bool settle_corners();
   bool triangulate_caps();
+  /// Appends cap triangle `t` (slots into `refs`) on plane `plane`, dressed as a cut face.
+  void add_cap_triangle(std::size_t plane, const std::vector<std::int32_t>& refs, const Triangle& t);
   void select_planes(std::span<const Plane> planes, const Aabb& box);
   void first_sight(std::int32_t v);
   bool inside_all(std::int32_t v);
   int vertex_side(std::int32_t v, int plane);
   int corner_side(const PolygonCorner& c, int plane);
   PolygonCorner crossing(const PolygonCorner& a, int side_a, const PolygonCorner& b, int plane);
+  /// Where plane `plane` crosses the segment from ref `pos` (beyond it) to ref `neg`, in [0, 1].
+  double crossing_parameter(std::int32_t pos, std::int32_t neg, int plane) const;
   std::int32_t corner_ref(std::int32_t corner);
   std::int32_t out_index(std::int32_t ref);
   [[nodiscard]] const Vec3& position(std::int32_t ref) const {
@@ -104,6 +116,7 @@ class CellClipper {
 
   const Mesh* solid_;
   std::int32_t vertex_count_;
+  bool attributed_;                                // the solid carries attributes
   std::vector<std::int32_t> owner_;                // per solid vertex: its owner site, -1 when unclear
   std::vector<std::int32_t> owned_start_;          // per site: CSR offsets into owned_, #S + 1
   std::vector<std::int32_t> owned_;                // triangles whose corners share one owner, by site

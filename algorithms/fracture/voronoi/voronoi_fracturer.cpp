@@ -17,7 +17,9 @@
 
 #include "algorithms/fracture/voronoi/voronoi_fracturer.h"
 
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_assembly.h"
 #include "algorithms/core/volume_components.h"
 #include "algorithms/core/representable_range.h"
 #include "algorithms/fracture/fracture_limits.h"
@@ -170,6 +172,7 @@ class CellCutter {
   /// into `below`. A part that still fails is kept whole (false is returned).
   bool slice_by_component(const Mesh& piece, const Plane& plane, Mesh& below) {
     below = Mesh{};
+    copy_attribute_frame(piece, below);
     bool ok = true;
     Mesh part_below;
     Mesh part_above;
@@ -181,13 +184,7 @@ class CellCutter {
         case SliceOutcome::all_below: break;
         case SliceOutcome::failed: ok = false; break;
       }
-      if (kept == nullptr) continue;
-      const auto offset = static_cast<std::int32_t>(below.vertices.size());
-      below.vertices.insert(below.vertices.end(), kept->vertices.begin(), kept->vertices.end());
-      for (std::size_t f = 0; f < kept->triangles.size(); ++f) {
-        const Triangle& t = kept->triangles[f];
-        below.add_triangle(t[0] + offset, t[1] + offset, t[2] + offset, kept->tags[f]);
-      }
+      if (kept != nullptr) append_mesh(below, *kept);
     }
     return ok;
   }
