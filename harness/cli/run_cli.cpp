@@ -52,6 +52,10 @@ int run_cli(int argc, char** argv, const Registries& registries) {
     if (e.get_exit_code() == 0) return app.exit(e);
     return fail_input(e.what());
   } catch (const std::exception& e) {
+    // fmt::print throws when standard output refuses a write (a full disk, a closed pipe) before the
+    // check below could see it: the same bad destination, the same answer.
+    if (std::ferror(stdout))
+      return fail_input(std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
     std::fprintf(stderr, "shatterbench: internal error: %s\n", e.what());
     return 3;
   }
