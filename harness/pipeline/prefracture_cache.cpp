@@ -1,5 +1,6 @@
 #include "harness/pipeline/prefracture_cache.h"
 
+#include "algorithms/core/attribute_transfer.h"
 #include "harness/limits.h"
 #include "harness/output/atomic_file.h"
 
@@ -9,9 +10,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <cerrno>
 #include <system_error>
 #include <type_traits>
@@ -23,8 +26,9 @@
 namespace shatter {
 namespace {
 
-// Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss).
-constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '2'};
+// Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss);
+// version 3 stores each fragment's attributes and the solid's attributes are part of the key.
+constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '3'};
 
 /// FNV-1a, 64 bit, fed field by field.
 class Fnv1a {
@@ -77,6 +81,25 @@ std::uint64_t key_hash(const Mesh& solid, const PrefractureKey& key) {
   h.value(solid.triangles.size());
   for (const Triangle& t : solid.triangles) h.bytes(t.data(), 3 * sizeof(std::int32_t));
   for (const FaceTag t : solid.tags) h.value(t);
+  // The solid's attributes decide the fragments' attributes (an OBJ and its retextured copy differ).
+  const MeshAttributes& a = solid.attributes;
+  h.value(a.layout.normals);
+  h.value(a.layout.uv_sets);
+  h.value(a.layout.tangents);
+  h.value(a.corners.size());
+  h.bytes(a.corners.data(), a.corners.size() * sizeof(double));
+  h.value(a.materials.size());
+  h.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
+  h.value(a.slots.size());
+  for (const MaterialSlot& slot : a.slots) {
+    h.text(slot.name);
+    h.bytes(slot.base_color.data(), sizeof slot.base_color);
+    h.text(slot.base_color_texture);
+    h.value(slot.base_color_image ? slot.base_color_image->bytes.size() : std::size_t{0});
+    if (slot.base_color_image) h.bytes(slot.base_color_image->bytes.data(), slot.base_color_image->bytes.size());
+  }
+  h.value(a.cut.material);
+  h.value(a.cut.uv_scale);
   h.text(key.fracturer);
   h.value(key.fragments);
   h.value(key.seed);
@@ -97,6 +120,10 @@ class Writer {
     bytes(&v, sizeof v);
   }
   void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
+  void text(const std::string& s) {
+    value(static_cast<std::uint64_t>(s.size()));
+    bytes(s.data(), s.size());
+  }
   [[nodiscard]] const std::string& data() const { return out_; }
 
  private:
@@ -121,6 +148,16 @@ class Reader {
     }
     std::memcpy(p, in_.data() + pos_, n);
     pos_ += n;
+  }
+  std::string text() {
+    const auto n = value<std::uint64_t>();
+    if (!ok_ || n > left()) {
+      ok_ = false;
+      return {};
+    }
+    std::string s(static_cast<std::size_t>(n), '\0');
+    bytes(s.data(), s.size());
+    return s;
   }
   [[nodiscard]] bool ok() const { return ok_; }
   [[nodiscard]] bool at_end() const { return pos_ == in_.size(); }
@@ -149,6 +186,68 @@ std::uint64_t checksum(const char* data, std::size_t n) {
   Fnv1a h;
   h.bytes(data, n);
   return h.hash();
+}
+
+/// The distinct embedded images of the fragments' slots, in order of first use: stored once per file,
+/// since every fragment cut from one mesh shares them.
+std::vector<const TextureImage*> images_of(std::span<const Fragment> fragments) {
+  std::vector<const TextureImage*> images;
+  for (const Fragment& f : fragments)
+    for (const MaterialSlot& slot : f.mesh.attributes.slots)
+      if (slot.base_color_image && std::find(images.begin(), images.end(), slot.base_color_image.get()) == images.end())
+        images.push_back(slot.base_color_image.get());
+  return images;
+}
+
+/// Appends a mesh's attributes; slot images as indices into `images`.
+void write_attributes(Writer& w, const MeshAttributes& a, const std::vector<const TextureImage*>& images) {
+  w.value(static_cast<std::uint8_t>(a.layout.normals));
+  w.value(static_cast<std::int32_t>(a.layout.uv_sets));
+  w.value(static_cast<std::uint8_t>(a.layout.tangents));
+  w.value(static_cast<std::uint64_t>(a.corners.size()));
+  w.bytes(a.corners.data(), a.corners.size() * sizeof(double));
+  w.value(static_cast<std::uint64_t>(a.materials.size()));
+  w.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
+  w.value(static_cast<std::uint64_t>(a.slots.size()));
+  for (const MaterialSlot& slot : a.slots) {
+    w.text(slot.name);
+    w.bytes(slot.base_color.data(), sizeof slot.base_color);
+    w.text(slot.base_color_texture);
+    const auto image = std::find(images.begin(), images.end(), slot.base_color_image.get());
+    w.value(slot.base_color_image ? static_cast<std::int64_t>(image - images.begin()) : std::int64_t{-1});
+  }
+  w.value(a.cut.material);
+  w.value(a.cut.uv_scale);
+}
+
+/// Reads what write_attributes wrote; false on any overrun or an image index out of range.
+bool read_attributes(Reader& r, MeshAttributes& a, const std::vector<std::shared_ptr<const TextureImage>>& images) {
+  a.layout.normals = r.value<std::uint8_t>() != 0;
+  a.layout.uv_sets = r.value<std::int32_t>();
+  a.layout.tangents = r.value<std::uint8_t>() != 0;
+  if (a.layout.uv_sets < 0 || a.layout.uv_sets > kMaxUvSets) return false;
+  const auto corners = r.value<std::uint64_t>();
+  if (!r.ok() || corners > r.left() / sizeof(double)) return false;
+  a.corners.resize(static_cast<std::size_t>(corners));
+  r.bytes(a.corners.data(), a.corners.size() * sizeof(double));
+  const auto materials = r.value<std::uint64_t>();
+  if (!r.ok() || materials > r.left() / sizeof(std::int32_t)) return false;
+  a.materials.resize(static_cast<std::size_t>(materials));
+  r.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
+  const auto slots = r.value<std::uint64_t>();
+  if (!r.ok() || slots > r.left()) return false;
+  a.slots.resize(static_cast<std::size_t>(slots));
+  for (MaterialSlot& slot : a.slots) {
+    slot.name = r.text();
+    r.bytes(slot.base_color.data(), sizeof slot.base_color);
+    slot.base_color_texture = r.text();
+    const auto image = r.value<std::int64_t>();
+    if (image < -1 || image >= static_cast<std::int64_t>(images.size())) return false;
+    if (image >= 0) slot.base_color_image = images[static_cast<std::size_t>(image)];
+  }
+  a.cut.material = r.value<std::int32_t>();
+  a.cut.uv_scale = r.value<double>();
+  return r.ok();
 }
 
 /// The bytes of the regular file at `path` when it holds at most kMaxCacheEntryBytes; nothing for a
@@ -226,6 +325,16 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
   std::string skip(expected.data().size(), '\0');
   r.bytes(skip.data(), skip.size());
 
+  const auto image_count = r.value<std::uint64_t>();
+  if (!r.ok() || image_count > r.left()) return std::nullopt;
+  std::vector<std::shared_ptr<const TextureImage>> images;
+  for (std::uint64_t i = 0; i < image_count && r.ok(); ++i) {
+    auto image = std::make_shared<TextureImage>();
+    image->mime_type = r.text();
+    const std::string bytes = r.text();
+    image->bytes.assign(bytes.begin(), bytes.end());
+    images.push_back(std::move(image));
+  }
   const auto count = r.value<std::uint64_t>();
   if (!r.ok() || count > r.left()) return std::nullopt;
   std::vector<Fragment> fragments(static_cast<std::size_t>(count));
@@ -242,7 +351,9 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
     r.bytes(&f.mass.volume, sizeof(double));
     r.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     r.bytes(f.mass.inertia.data(), 9 * sizeof(double));
+    if (!read_attributes(r, f.mesh.attributes, images)) return std::nullopt;
     if (!r.ok() || !plausible(f)) return std::nullopt;
+    if (!f.mesh.attributes.empty() && !check_attributes(f.mesh, "cache")) return std::nullopt;
     for (const Triangle& t : f.mesh.triangles)
       for (const std::int32_t i : t)
         if (i < 0 || static_cast<std::uint64_t>(i) >= nv) return std::nullopt;
@@ -258,6 +369,12 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
   if (ec) return false;
   Writer w;
   write_header(w, key_hash(solid, key), solid, key);
+  const std::vector<const TextureImage*> images = images_of(fragments);
+  w.value(static_cast<std::uint64_t>(images.size()));
+  for (const TextureImage* image : images) {
+    w.text(image->mime_type);
+    w.text(std::string(image->bytes.begin(), image->bytes.end()));
+  }
   w.value(static_cast<std::uint64_t>(fragments.size()));
   for (const Fragment& f : fragments) {
     w.value(static_cast<std::uint64_t>(f.mesh.vertices.size()));
@@ -268,6 +385,7 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
     w.bytes(&f.mass.volume, sizeof(double));
     w.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     w.bytes(f.mass.inertia.data(), 9 * sizeof(double));
+    write_attributes(w, f.mesh.attributes, images);
   }
   const std::uint64_t sum = checksum(w.data().data(), w.data().size());
   w.value(sum);
