@@ -27,7 +27,7 @@ struct Solid {
   RepairReport repair;        ///< what repair changed (all zero when the mesh was a solid)
 };
 
-/// Reads `path` (.off or .obj), repairs it per `repair`, validates it as a solid and measures it.
+/// Reads `path` (any format read_asset reads: .off, .obj, glTF, FBX, PLY, STL, ...), repairs it per `repair`, validates it as a solid and measures it.
 /// Errors name the file.
 Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair = SolidRepair::repair);
 
