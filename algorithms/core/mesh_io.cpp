@@ -111,7 +111,8 @@ std::string attributed_obj_text(const Mesh& mesh, const std::string& mtl_file) {
     std::int32_t material = -1;
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
       if (mesh.tags[f] != tag) continue;
-      if (!attr.materials.empty() && attr.materials[f] != material) {
+      if (!attr.materials.empty() && attr.materials[f] != material && attr.materials[f] >= 0 &&
+          attr.materials[f] < static_cast<std::int32_t>(attr.slots.size())) {
         material = attr.materials[f];
         out += "usemtl " + attr.slots[static_cast<std::size_t>(material)].name + "\n";
       }

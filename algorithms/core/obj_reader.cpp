@@ -198,8 +198,12 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
       for (std::int64_t i = 1; i <= numbers; ++i) {
         const Result<Corner> c = parse_corner(tokens[static_cast<std::size_t>(i)], so_far);
         if (!c) return fail(line, "face: " + c.error().message);
-        if (c->v >= limits.max_vertices || c->vt >= limits.max_vertices || c->vn >= limits.max_vertices)
-          return fail(line, "face: an index is past the limit of " + std::to_string(limits.max_vertices) + " per mesh");
+        if (c->v >= limits.max_vertices)
+          return fail(line, "face: vertex index " + std::to_string(c->v + 1) + " is past the limit of " +
+                                std::to_string(limits.max_vertices) + " vertices per mesh");
+        if (c->vt >= limits.max_vertices || c->vn >= limits.max_vertices)
+          return fail(line, "face: a texture coordinate or normal index is past the limit of " +
+                                std::to_string(limits.max_vertices) + " per mesh");
         faces.corners.push_back(static_cast<std::int32_t>(c->v));
         faces.uvs.push_back(static_cast<std::int32_t>(c->vt));
         faces.normals.push_back(static_cast<std::int32_t>(c->vn));
@@ -225,14 +229,18 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
     } else if (key == "mtllib") {
       if (tokens.size() < 2) return fail(line, "'mtllib' without a file name");
       // Each token is one library (the format's rule); a name with spaces is tried whole first.
+      std::error_code ec;
       std::vector<std::string> names = {joined(tokens, 1)};
-      if (tokens.size() > 2 && !std::filesystem::exists(path.parent_path() / names[0]))
+      if (tokens.size() > 2 && !std::filesystem::exists(path.parent_path() / names[0], ec))
         names.assign(tokens.begin() + 1, tokens.end());
       for (const std::string& name : names) {
         const std::filesystem::path library = path.parent_path() / name;
-        std::error_code ec;
-        if (!std::filesystem::exists(library, ec))
+        const std::filesystem::file_status status = std::filesystem::status(library, ec);
+        if (!std::filesystem::exists(status))
           return fail(line, "material library '" + name + "' not found (looked for " + library.string() + ")");
+        // Only a file: a FIFO or a device named by a hostile OBJ is never opened.
+        if (!std::filesystem::is_regular_file(status))
+          return fail(line, "material library '" + name + "' is not a regular file");
         Result<std::vector<MaterialSlot>> slots = read_mtl(library, limits);
         if (!slots) return fail(line, "material library: " + slots.error().message);
         const std::filesystem::path folder = std::filesystem::path(name).parent_path();

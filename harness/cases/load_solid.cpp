@@ -1,6 +1,7 @@
 #include "harness/cases/load_solid.h"
 
 #include "algorithms/assets/read_asset.h"
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/representable_range.h"
 
 #include <utility>
@@ -31,6 +32,7 @@ Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair)
     if (!as_given) return as_given.error();
   }
   solid.mesh = std::move(as_given->first);
+  prepare_cut_faces(solid.mesh);  // an asset's cut faces get the interior material and a planar UV
   solid.report = as_given->second;
   solid.mass = mass_properties(solid.mesh);
   solid.area = surface_area(solid.mesh);

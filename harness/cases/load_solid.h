@@ -27,15 +27,16 @@ struct Solid {
   RepairReport repair;        ///< what repair changed (all zero when the mesh was a solid)
 };
 
-/// Reads `path` (any format read_asset reads: .off, .obj, glTF, FBX, PLY, STL, ...), repairs it per `repair`, validates it as a solid and measures it.
-/// Errors name the file.
+/// Reads `path` (any format read_asset reads: .off, .obj, glTF, FBX, PLY, STL, ...), repairs it per
+/// `repair`, validates it as a solid and measures it. Errors name the file.
 Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair = SolidRepair::repair);
 
 /// Repairs (per `repair`), validates and measures an in-memory mesh; `what` names it in errors. Every
 /// input solid of the harness (mesh files and case meshes alike) passes here: a mesh outside the
 /// representable range (representable_range.h) is refused before it is measured. A mesh that passes
 /// the acceptance rule (validate_solid) is never repaired; one that fails it is repaired, and the
-/// repaired mesh must pass the rule in turn.
+/// repaired mesh must pass the rule in turn. A mesh with attributes is readied for fracture
+/// (prepare_cut_faces: the interior material, the default cut-face UV scale).
 Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair = SolidRepair::repair);
 
 }  // namespace shatter
