@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <exception>
 #include <mutex>
 #include <system_error>
 
@@ -58,12 +59,19 @@ Result<Mesh> import_scene(Assimp::Importer& importer, const std::string& name, c
   if (own_logger) Assimp::DefaultLogger::create("", Assimp::Logger::NORMAL, 0);
   auto* stream = new DroppedDataStream;  // owned by the logger while attached
   Assimp::DefaultLogger::get()->attachStream(stream, Assimp::Logger::Warn);
-  const aiScene* scene = import();
+  const aiScene* scene = nullptr;
+  std::string thrown;
+  try {
+    scene = import();  // assimp catches its own import errors; this keeps anything else (bad_alloc) here
+  } catch (const std::exception& e) {
+    thrown = e.what();
+  }
   std::string dropped = stream->dropped;
   Assimp::DefaultLogger::get()->detachStream(stream, Assimp::Logger::Warn);
   delete stream;
   if (own_logger) Assimp::DefaultLogger::kill();
 
+  if (!thrown.empty()) return Error{name + ": " + first_line(thrown.c_str())};
   if (scene == nullptr) return Error{name + ": " + first_line(importer.GetErrorString())};
   if (!dropped.empty()) {
     dropped = dropped.substr(dropped.find(':') == std::string::npos ? 0 : dropped.find(':') + 1);

@@ -46,6 +46,8 @@ std::string one_line_error(const fs::path& path, const MeshReadLimits& limits = 
 }  // namespace
 
 TEST_CASE("read_asset: the textured glTF box is a closed solid with UVs and its embedded PNG", "[assets]") {
+  // The file's own figures: 24 vertices (4 per face), 36 indices, TEXCOORD_0 within [0, 6] x [0, 1],
+  // material 0 "Texture" with image 0, a PNG in the binary chunk.
   const fs::path box = kGltf / "BoxTextured-glTF-Binary" / "BoxTextured.glb";
   REQUIRE(fs::exists(box));
   Result<Mesh> mesh = read_asset(box);
@@ -59,7 +61,8 @@ TEST_CASE("read_asset: the textured glTF box is a closed solid with UVs and its 
     for (int k = 0; k < 3; ++k) {
       const double* c = a.corner(f, k);
       CHECK(Vec3(c[0], c[1], c[2]).norm() == Approx(1.0).epsilon(1e-6));
-      CHECK((c[3] >= 0.0 && c[3] <= 1.0 && c[4] >= 0.0 && c[4] <= 1.0));
+      // The file's TEXCOORD_0 accessor declares min [0, 0] and max [6, 1] (u wraps around the cube).
+      CHECK((c[3] >= 0.0 && c[3] <= 6.0 && c[4] >= 0.0 && c[4] <= 1.0));
     }
   // One material is used (assimp adds an unused default): one slot, its texture embedded.
   REQUIRE(a.slots.size() == 1);
@@ -88,6 +91,9 @@ TEST_CASE("read_asset: hostile glTF files give one-line errors", "[assets][hosti
   const fs::path empty = dir / "empty.glb";
   std::ofstream(empty, std::ios::binary) << "";
   one_line_error(empty);
+  for (const fs::path input : {kGltf / "IndexOutOfRange" / "IndexOutOfRange.gltf", kGltf / "MissingBin" / "BoxTextured.gltf",
+                               kGltf / "BoxWithInfinites-glTF-Binary" / "BoxWithInfinites.glb"})
+    REQUIRE(fs::exists(input));  // the hostile inputs are data: missing, the test fails
   // assimp drops the faces whose indices are out of range and warns: refused here.
   CHECK_THAT(one_line_error(kGltf / "IndexOutOfRange" / "IndexOutOfRange.gltf"), Contains("out-of-range"));
   one_line_error(kGltf / "IndexOutOfRange" / "AllIndicesOutOfRange.gltf");

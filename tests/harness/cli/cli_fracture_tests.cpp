@@ -57,6 +57,7 @@ TEST_CASE("cli: fracture prints the contract JSON and writes the fragments", "[c
   for (const auto& e : fs::directory_iterator(dir / "frags")) files += e.path().extension() == ".obj";
   CHECK(files == n);
   CHECK(fs::exists(dir / "frags" / "fragment_000.obj"));
+  CHECK(fs::exists(dir / "frags" / "fragments.glb"));  // written with or without attributes
   auto back = read_obj(dir / "frags" / "fragment_000.obj");
   REQUIRE(back.ok());
   CHECK(back->triangle_count() > 0);
