@@ -22,6 +22,16 @@
 /// Slots sharing one embedded texture share one TextureImage. assimp stores positions in single
 /// precision, so an asset's positions are its floats widened to double.
 ///
+/// Before assimp: content that the extension's importers do not recognise is refused at once (assimp
+/// would try every other format's detection, seconds on a few kilobytes); a .glb must be a
+/// well-formed container (magic, version 2, lengths within the data: assimp allocates what a chunk
+/// header claims before checking it); glTF JSON must parse strictly (UTF-8 included: assimp 5.2 crashes
+/// on a mimeType that is not), accessors and buffer views must lie within their data (the
+/// specification's bounds, which assimp 5.2 does not check before copying), an image's MIME type must
+/// hold a '/' (assimp reads the subtype after it unchecked), and a LINE_LOOP primitive is refused
+/// (assimp 5.2 dereferences a null face converting one). All four were found by
+/// fuzz/gltf_reader_fuzzer.cpp.
+///
 /// Errors, one line each: a file past `limits.max_file_bytes` is refused before assimp reads it; the
 /// vertex and triangle limits are checked on the imported scene before anything is converted;
 /// assimp's own error is `<path>: <first line of assimp's message>`; assimp dropping faces whose
