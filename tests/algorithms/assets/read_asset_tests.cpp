@@ -104,6 +104,35 @@ TEST_CASE("read_asset: hostile glTF files give one-line errors", "[assets][hosti
   CHECK_THAT(one_line_error(dir / "mesh.nosuchformat"), Contains("unknown mesh format"));
 }
 
+TEST_CASE("read_asset: glTF that assimp would crash on or read past is refused before import", "[assets][hostile]") {
+  // Each case edits the textured box's JSON in place (same length, so the container stays valid)
+  // the way the fuzzer found assimp 5.2 crashing or reading out of bounds.
+  const fs::path dir = scratch("guards");
+  const std::string box = bytes_of(kGltf / "BoxTextured-glTF-Binary" / "BoxTextured.glb");
+  REQUIRE(box.size() > 1000);
+  const auto edited = [&](const std::string& name, const std::string& from, const std::string& to) {
+    REQUIRE(from.size() == to.size());
+    std::string bytes = box;
+    const std::size_t at = bytes.find(from);
+    REQUIRE(at != std::string::npos);
+    bytes.replace(at, from.size(), to);
+    const fs::path path = dir / (name + ".glb");
+    std::ofstream(path, std::ios::binary) << bytes;
+    return path;
+  };
+  CHECK_THAT(one_line_error(edited("line_loop", "\"mode\":4", "\"mode\":2")), Contains("line loop"));
+  CHECK_THAT(one_line_error(edited("mime", "\"image/png\"", "\"image*png\"")), Contains("MIME type"));
+  CHECK_THAT(one_line_error(edited("utf8", "\"image/png\"", "\"\x9f\x98\x9a\xc8" "a/png\"")), Contains("does not parse"));
+  CHECK_THAT(one_line_error(edited("bounds", "\"byteOffset\":288", "\"byteOffset\":289")),
+             Contains("accessor 2 ends past its buffer view"));
+  std::string chunk = box;
+  chunk[15] = '\x0d';  // the JSON chunk claims 200 MB
+  std::ofstream(dir / "chunk.glb", std::ios::binary) << chunk;
+  CHECK_THAT(one_line_error(dir / "chunk.glb"), Contains("chunk 0's length"));
+  std::ofstream(dir / "text.glb", std::ios::binary) << "solid not a binary glTF, only text\n";
+  CHECK_THAT(one_line_error(dir / "text.glb"), Contains("no binary glTF magic"));
+}
+
 TEST_CASE("read_asset: the size limit holds before import, the counts after it", "[assets][hostile]") {
   const fs::path box = kGltf / "BoxTextured-glTF-Binary" / "BoxTextured.glb";
   MeshReadLimits small;
