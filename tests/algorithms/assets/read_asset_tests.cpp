@@ -146,7 +146,7 @@ TEST_CASE("read_asset: the size limit holds before import, the counts after it",
   CHECK_THAT(one_line_error(box, vertices), Contains("vertex count 24 exceeds the limit of 23"));
 }
 
-TEST_CASE("read_asset: .off and .obj go to the project's readers; assimp's formats are recognised", "[assets]") {
+TEST_CASE("read_asset: .off and .obj go to the project's readers, assimp's formats are recognised", "[assets]") {
   const fs::path dir = scratch("dispatch");
   std::ofstream(dir / "t.obj", std::ios::binary) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
   const Result<Mesh> obj = read_asset(dir / "t.obj");
