@@ -1,6 +1,7 @@
 #include "algorithms/core/mesh_io.h"
 
 #include "algorithms/core/bounded_read.h"
+#include "algorithms/core/material_library.h"
 #include "algorithms/core/mesh_text.h"
 #include "algorithms/core/polygon_triangulation.h"
 
@@ -58,6 +59,68 @@ void append_face(std::string& out, const char* prefix, const Triangle& t, int ba
   char buffer[64];
   const int n = std::snprintf(buffer, sizeof buffer, "%s%d %d %d\n", prefix, t[0] + base, t[1] + base, t[2] + base);
   out.append(buffer, static_cast<std::size_t>(n));
+}
+
+/// Appends a face `f a/t/n b/t/n c/t/n`, each of `uv` and `normal` given as the first 1-based index
+/// of the triangle's three consecutive corner entries (0: the channel is absent).
+void append_attributed_face(std::string& out, const Triangle& t, std::size_t uv, std::size_t normal) {
+  char buffer[192];
+  out += "f";
+  for (int k = 0; k < 3; ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    int n = 0;
+    if (uv != 0 && normal != 0)
+      n = std::snprintf(buffer, sizeof buffer, " %d/%zu/%zu", t[i] + 1, uv + i, normal + i);
+    else if (uv != 0)
+      n = std::snprintf(buffer, sizeof buffer, " %d/%zu", t[i] + 1, uv + i);
+    else if (normal != 0)
+      n = std::snprintf(buffer, sizeof buffer, " %d//%zu", t[i] + 1, normal + i);
+    else
+      n = std::snprintf(buffer, sizeof buffer, " %d", t[i] + 1);
+    out.append(buffer, static_cast<std::size_t>(n));
+  }
+  out += "\n";
+}
+
+/// The attributed OBJ text (see write_obj): per-corner vn and vt, usemtl per run of one material.
+std::string attributed_obj_text(const Mesh& mesh, const std::string& mtl_file) {
+  const MeshAttributes& attr = mesh.attributes;
+  const AttributeLayout& layout = attr.layout;
+  std::string out = "# shatterbench mesh\n";
+  if (!attr.slots.empty()) out += "mtllib " + mtl_file + "\n";
+  for (const Vec3& p : mesh.vertices) append_vertex(out, "v ", p);
+  char buffer[96];
+  if (layout.normals)
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const double* c = attr.corner(f, k) + AttributeLayout::normal_offset();
+        Vec3 n(c[0], c[1], c[2]);
+        if (n.norm() > 0.0) n.normalize();
+        append_vertex(out, "vn ", n);
+      }
+  if (layout.uv_sets > 0)
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const double* c = attr.corner(f, k) + layout.uv_offset(0);
+        const int n = std::snprintf(buffer, sizeof buffer, "vt %.17g %.17g\n", c[0], c[1]);
+        out.append(buffer, static_cast<std::size_t>(n));
+      }
+  for (const FaceTag tag : {FaceTag::surface, FaceTag::cut, FaceTag::repair}) {
+    if (std::find(mesh.tags.begin(), mesh.tags.end(), tag) == mesh.tags.end()) continue;
+    out += tag == FaceTag::cut ? "g cut\n" : tag == FaceTag::repair ? "g repair\n" : "g surface\n";
+    std::int32_t material = -1;
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
+      if (mesh.tags[f] != tag) continue;
+      if (!attr.materials.empty() && attr.materials[f] != material && attr.materials[f] >= 0 &&
+          attr.materials[f] < static_cast<std::int32_t>(attr.slots.size())) {
+        material = attr.materials[f];
+        out += "usemtl " + attr.slots[static_cast<std::size_t>(material)].name + "\n";
+      }
+      const std::size_t first = 3 * f + 1;
+      append_attributed_face(out, mesh.triangles[f], layout.uv_sets > 0 ? first : 0, layout.normals ? first : 0);
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -173,8 +236,16 @@ Result<Mesh> read_mesh(const std::filesystem::path& path, const MeshReadLimits& 
   return Error{path.string() + ": unknown mesh format '" + ext + "' (expected .off or .obj)"};
 }
 
-Status write_obj(const Mesh& mesh, const std::filesystem::path& path) {
+Status write_obj(const Mesh& mesh, const std::filesystem::path& path, const std::string& mtl_file) {
   assert(mesh.tags.size() == mesh.triangles.size());
+  if (!mesh.attributes.empty()) {
+    std::string library = mtl_file;
+    if (!mesh.attributes.slots.empty() && library.empty()) {
+      library = path.stem().string() + ".mtl";
+      if (Status s = write_mtl(mesh.attributes.slots, path.parent_path() / library); !s) return s;
+    }
+    return write_text(attributed_obj_text(mesh, library), path);
+  }
   std::string out = "# shatterbench mesh\n";
   out.reserve(mesh.vertices.size() * 60 + mesh.triangles.size() * 24);
   for (const Vec3& p : mesh.vertices) append_vertex(out, "v ", p);

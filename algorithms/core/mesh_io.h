@@ -25,11 +25,28 @@ namespace shatter {
 /// only x y z are kept. A face line may end with up to 4 colour numbers.
 Result<Mesh> read_off(const std::filesystem::path& path, const MeshReadLimits& limits = {});
 
-/// Reads the vertices and faces of an OBJ file. A `v` statement holds x y z, x y z w with w = 1, or
-/// x y z r g b (a vertex colour, checked and dropped); an `f` statement holds at least 3 corners
-/// `v`, `v/vt`, `v//vn` or `v/vt/vn` (negative indices count back from the last vertex); `g` and `o`
-/// name the group (`cut` tags its faces as cut faces, `repair` as repair faces). Texture coordinates, normals, materials,
-/// smoothing groups, lines and points are skipped; free-form geometry (`curv`, `surf`) and unknown
+/// Reads the vertices, faces, normals, texture coordinates and materials of an OBJ file. A `v`
+/// statement holds x y z, x y z w with w = 1, or x y z r g b (a vertex colour, checked and dropped);
+/// `vn` holds x y z, `vt` u v or u v w (w dropped); an `f` statement holds at least 3 corners `v`,
+/// `v/vt`, `v//vn` or `v/vt/vn` (negative indices count back from the last one read); `g` and `o`
+/// name the group (`cut` tags its faces as cut faces, `repair` as repair faces).
+///
+/// Attributes (mesh_attributes.h), per triangle corner: normals when every face corner names a `vn`,
+/// one UV set when every corner names a `vt`; a channel that only some corners have is dropped for
+/// the whole mesh (a renderer cannot draw part of a UV layout; a file with none reads as before, with
+/// no attributes). Normals are kept as written (not normalised). A `vt`/`vn` index out of range is an
+/// error naming the line.
+///
+/// Materials: when any face follows a `usemtl`, each material name used becomes a slot (in order of
+/// first use) and faces before the first `usemtl` get a slot "default"; without `usemtl` there are
+/// no slots. `mtllib` names libraries relative to the OBJ's folder, read by read_mtl
+/// (material_library.h) at that line: a library that does not exist is an error naming it (`file:line:
+/// material library 'y.mtl' not found (looked for PATH)`), and so is a `usemtl` name that the file's
+/// libraries lack (`file:line: material 'x' not in 'y.mtl'`). An OBJ without `mtllib` (some exporters
+/// write none) gets one white slot per `usemtl` name. A slot takes the library's Kd, d/Tr and map_Kd;
+/// the texture path is made relative to the OBJ's folder.
+///
+/// Smoothing groups, lines and points are skipped; free-form geometry (`curv`, `surf`) and unknown
 /// statements are errors.
 Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& limits = {});
 
@@ -37,8 +54,15 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
 Result<Mesh> read_mesh(const std::filesystem::path& path, const MeshReadLimits& limits = {});
 
 /// Writes an OBJ with the surface faces in group `surface`, the cut faces in group `cut` and the faces
-/// that mesh repair added in group `repair` (a group only when it has faces).
-Status write_obj(const Mesh& mesh, const std::filesystem::path& path);
+/// that mesh repair added in group `repair` (a group only when it has faces). Positions with 17
+/// significant digits (read_obj gives them back exactly). A mesh without attributes is written as
+/// positions and faces only. An attributed mesh adds a `vn` (normalised; a zero normal as written)
+/// and a `vt` (UV set 0; OBJ has one) per triangle corner, corners written as `v/vt/vn`, and, when it
+/// has material slots, `mtllib` and a `usemtl` before each run of faces of one material within a
+/// group. The library named is `mtl_file` (the caller writes it, as a folder of fragments shares one)
+/// or, when `mtl_file` is empty, `<name of path>.mtl` written beside the OBJ by write_mtl. Tangents
+/// and UV sets past the first have no OBJ statement and are not written.
+Status write_obj(const Mesh& mesh, const std::filesystem::path& path, const std::string& mtl_file = {});
 
 /// Writes an OFF file.
 Status write_off(const Mesh& mesh, const std::filesystem::path& path);

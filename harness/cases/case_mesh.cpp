@@ -3,7 +3,7 @@
 #include "harness/cases/physical_range.h"
 #include "harness/cases/prism_mesh.h"
 
-#include "algorithms/core/mesh_io.h"
+#include "algorithms/assets/read_asset.h"
 #include "algorithms/core/mesh_limits.h"
 #include "algorithms/core/primitives.h"
 #include "harness/limits.h"
@@ -101,12 +101,8 @@ TubeSpec read_tube(JsonReader& r, const json& v, std::string_view path) {
   return s;
 }
 
-/// True when `file` ends in .off or .obj, any case.
-bool has_mesh_extension(const fs::path& file) {
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == ".off" || ext == ".obj";
-}
+/// True when read_asset reads `file` by its extension (.off, .obj, .glb, .fbx, ..., any case).
+bool has_mesh_extension(const fs::path& file) { return is_asset_extension(file.extension().string()); }
 
 /// Reads `{"file", "scale", "rotate", "translate", "repair"}` and resolves the file.
 MeshFileSpec read_file_spec(JsonReader& r, const json& v, std::string_view path, const fs::path& case_dir) {
@@ -115,7 +111,8 @@ MeshFileSpec read_file_spec(JsonReader& r, const json& v, std::string_view path,
   if (!r.read_required(v, path, "file", s.file)) return s;
   const fs::path file(s.file);
   if (s.file.empty() || !has_mesh_extension(file)) {
-    r.fail(file_at, fmt::format("expected a .off or .obj file, got \"{}\"", s.file));
+    r.fail(file_at, fmt::format("expected a mesh file (.off, .obj, .gltf, .glb, .fbx, .ply, .stl, .dae, .3ds, ...), got \"{}\"",
+                                s.file));
     return s;
   }
   std::error_code ec;
@@ -209,13 +206,29 @@ Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what) {
     return make_tube(s->inner_radius, s->outer_radius, s->height, s->segments, s->center);
   if (const auto* s = std::get_if<PrismSpec>(&spec)) return make_prism(*s, what);
   const auto& file = std::get<MeshFileSpec>(spec);
-  Result<Mesh> mesh = read_mesh(file.path);
+  Result<Mesh> mesh = read_asset(file.path);
   if (!mesh) return Error{fmt::format("{}: {}", what, mesh.error().message)};
   const Eigen::Matrix3d rotation = rotation_xyz_deg(file.rotate_deg);
   const bool identity =
       file.scale == 1.0 && rotation == Eigen::Matrix3d::Identity() && (file.translate.array() == 0.0).all();
   if (!identity)
     for (Vec3& p : mesh->vertices) p = rotation * (file.scale * p) + file.translate;
+  // Normals and tangents turn with the mesh (a positive uniform scale leaves their directions).
+  MeshAttributes& a = mesh->attributes;
+  if (rotation != Eigen::Matrix3d::Identity() && (a.layout.normals || a.layout.tangents)) {
+    const auto stride = static_cast<std::size_t>(a.layout.stride());
+    for (std::size_t at = 0; at < a.corners.size(); at += stride) {
+      double* c = a.corners.data() + at;
+      if (a.layout.normals) {
+        Eigen::Map<Vec3> normal(c + AttributeLayout::normal_offset());
+        normal = (rotation * normal).eval();
+      }
+      if (a.layout.tangents) {
+        Eigen::Map<Vec3> tangent(c + a.layout.tangent_offset());
+        tangent = (rotation * tangent).eval();
+      }
+    }
+  }
   return mesh;
 }
 

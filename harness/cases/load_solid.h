@@ -34,8 +34,8 @@ struct Solid {
   RepairReport repair;        ///< what repair changed (all zero when the mesh was a solid)
 };
 
-/// Reads `path` (.off or .obj), repairs it per `repair`, validates it as a solid and measures it.
-/// Errors name the file. `cut` as for make_solid.
+/// Reads `path` (any format read_asset reads: .off, .obj, glTF, FBX, PLY, STL, ...), repairs it per
+/// `repair`, validates it as a solid and measures it. Errors name the file. `cut` as for make_solid.
 Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair = SolidRepair::repair,
                          const CutFaceOptions& cut = {});
 

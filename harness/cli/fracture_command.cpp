@@ -90,7 +90,7 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
 void add_fracture_command(CLI::App& app, int& exit_code, const Registries& registries) {
   auto options = std::make_shared<FractureOptions>();
   CLI::App* cmd = app.add_subcommand("fracture", "Fracture one mesh and print time and error figures as JSON");
-  cmd->add_option("--mesh", options->mesh, "Input mesh (.off or .obj); repaired into a solid when it is not one")
+  cmd->add_option("--mesh", options->mesh, "Input mesh (.off, .obj, .glb, .gltf, .fbx, .ply, .stl, ...; docs/cli.md, Formats); repaired into a solid when it is not one")
       ->required();
   cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh that is not a solid instead of repairing it");
   add_cap_uv_scale_option(cmd, options->cap_uv_scale);

@@ -127,7 +127,7 @@ void add_table_command(CLI::App& app, int& exit_code, const Registries& registri
   auto options = std::make_shared<TableOptions>();
   CLI::App* cmd = app.add_subcommand(
       "table", "Fracture meshes with every fracturer and print a Markdown table of time and error figures");
-  cmd->add_option("--mesh", options->meshes, "Input meshes (.off or .obj); repaired into solids when they are not")
+  cmd->add_option("--mesh", options->meshes, "Input meshes (.off, .obj, .glb, .gltf, .fbx, .ply, .stl, ...; docs/cli.md, Formats); repaired into solids when they are not")
       ->required();
   cmd->add_flag("--no-repair", options->no_repair, "Refuse a mesh that is not a solid instead of repairing it");
   add_cap_uv_scale_option(cmd, options->cap_uv_scale);

@@ -10,9 +10,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <memory>
 #include <cerrno>
 #include <system_error>
 #include <type_traits>
@@ -24,8 +26,8 @@
 namespace shatter {
 namespace {
 
-// Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss).
-// Version 3 keys on the solid's attributes too and stores each fragment's per-face attribute values.
+// Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss);
+// version 3 stores each fragment's attributes and the solid's attributes are part of the key.
 constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '3'};
 
 /// FNV-1a, 64 bit, fed field by field.
@@ -79,7 +81,7 @@ std::uint64_t key_hash(const Mesh& solid, const PrefractureKey& key) {
   h.value(solid.triangles.size());
   for (const Triangle& t : solid.triangles) h.bytes(t.data(), 3 * sizeof(std::int32_t));
   for (const FaceTag t : solid.tags) h.value(t);
-  // The attributes: a dressed solid and the same geometry without attributes are different entries.
+  // The solid's attributes decide the fragments' attributes (an OBJ and its retextured copy differ).
   const MeshAttributes& a = solid.attributes;
   h.value(a.layout.normals);
   h.value(a.layout.uv_sets);
@@ -89,12 +91,12 @@ std::uint64_t key_hash(const Mesh& solid, const PrefractureKey& key) {
   h.value(a.materials.size());
   h.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
   h.value(a.slots.size());
-  for (const MaterialSlot& s : a.slots) {
-    h.text(s.name);
-    h.bytes(s.base_color.data(), s.base_color.size() * sizeof(double));
-    h.text(s.base_color_texture);
-    h.value(s.base_color_image ? s.base_color_image->bytes.size() : std::size_t{0});
-    if (s.base_color_image) h.bytes(s.base_color_image->bytes.data(), s.base_color_image->bytes.size());
+  for (const MaterialSlot& slot : a.slots) {
+    h.text(slot.name);
+    h.bytes(slot.base_color.data(), sizeof slot.base_color);
+    h.text(slot.base_color_texture);
+    h.value(slot.base_color_image ? slot.base_color_image->bytes.size() : std::size_t{0});
+    if (slot.base_color_image) h.bytes(slot.base_color_image->bytes.data(), slot.base_color_image->bytes.size());
   }
   h.value(a.cut.material);
   h.value(a.cut.uv_scale);
@@ -118,6 +120,10 @@ class Writer {
     bytes(&v, sizeof v);
   }
   void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
+  void text(const std::string& s) {
+    value(static_cast<std::uint64_t>(s.size()));
+    bytes(s.data(), s.size());
+  }
   [[nodiscard]] const std::string& data() const { return out_; }
 
  private:
@@ -142,6 +148,16 @@ class Reader {
     }
     std::memcpy(p, in_.data() + pos_, n);
     pos_ += n;
+  }
+  std::string text() {
+    const auto n = value<std::uint64_t>();
+    if (!ok_ || n > left()) {
+      ok_ = false;
+      return {};
+    }
+    std::string s(static_cast<std::size_t>(n), '\0');
+    bytes(s.data(), s.size());
+    return s;
   }
   [[nodiscard]] bool ok() const { return ok_; }
   [[nodiscard]] bool at_end() const { return pos_ == in_.size(); }
@@ -170,6 +186,68 @@ std::uint64_t checksum(const char* data, std::size_t n) {
   Fnv1a h;
   h.bytes(data, n);
   return h.hash();
+}
+
+/// The distinct embedded images of the fragments' slots, in order of first use: stored once per file,
+/// since every fragment cut from one mesh shares them.
+std::vector<const TextureImage*> images_of(std::span<const Fragment> fragments) {
+  std::vector<const TextureImage*> images;
+  for (const Fragment& f : fragments)
+    for (const MaterialSlot& slot : f.mesh.attributes.slots)
+      if (slot.base_color_image && std::find(images.begin(), images.end(), slot.base_color_image.get()) == images.end())
+        images.push_back(slot.base_color_image.get());
+  return images;
+}
+
+/// Appends a mesh's attributes; slot images as indices into `images`.
+void write_attributes(Writer& w, const MeshAttributes& a, const std::vector<const TextureImage*>& images) {
+  w.value(static_cast<std::uint8_t>(a.layout.normals));
+  w.value(static_cast<std::int32_t>(a.layout.uv_sets));
+  w.value(static_cast<std::uint8_t>(a.layout.tangents));
+  w.value(static_cast<std::uint64_t>(a.corners.size()));
+  w.bytes(a.corners.data(), a.corners.size() * sizeof(double));
+  w.value(static_cast<std::uint64_t>(a.materials.size()));
+  w.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
+  w.value(static_cast<std::uint64_t>(a.slots.size()));
+  for (const MaterialSlot& slot : a.slots) {
+    w.text(slot.name);
+    w.bytes(slot.base_color.data(), sizeof slot.base_color);
+    w.text(slot.base_color_texture);
+    const auto image = std::find(images.begin(), images.end(), slot.base_color_image.get());
+    w.value(slot.base_color_image ? static_cast<std::int64_t>(image - images.begin()) : std::int64_t{-1});
+  }
+  w.value(a.cut.material);
+  w.value(a.cut.uv_scale);
+}
+
+/// Reads what write_attributes wrote; false on any overrun or an image index out of range.
+bool read_attributes(Reader& r, MeshAttributes& a, const std::vector<std::shared_ptr<const TextureImage>>& images) {
+  a.layout.normals = r.value<std::uint8_t>() != 0;
+  a.layout.uv_sets = r.value<std::int32_t>();
+  a.layout.tangents = r.value<std::uint8_t>() != 0;
+  if (a.layout.uv_sets < 0 || a.layout.uv_sets > kMaxUvSets) return false;
+  const auto corners = r.value<std::uint64_t>();
+  if (!r.ok() || corners > r.left() / sizeof(double)) return false;
+  a.corners.resize(static_cast<std::size_t>(corners));
+  r.bytes(a.corners.data(), a.corners.size() * sizeof(double));
+  const auto materials = r.value<std::uint64_t>();
+  if (!r.ok() || materials > r.left() / sizeof(std::int32_t)) return false;
+  a.materials.resize(static_cast<std::size_t>(materials));
+  r.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
+  const auto slots = r.value<std::uint64_t>();
+  if (!r.ok() || slots > r.left()) return false;
+  a.slots.resize(static_cast<std::size_t>(slots));
+  for (MaterialSlot& slot : a.slots) {
+    slot.name = r.text();
+    r.bytes(slot.base_color.data(), sizeof slot.base_color);
+    slot.base_color_texture = r.text();
+    const auto image = r.value<std::int64_t>();
+    if (image < -1 || image >= static_cast<std::int64_t>(images.size())) return false;
+    if (image >= 0) slot.base_color_image = images[static_cast<std::size_t>(image)];
+  }
+  a.cut.material = r.value<std::int32_t>();
+  a.cut.uv_scale = r.value<double>();
+  return r.ok();
 }
 
 /// The bytes of the regular file at `path` when it holds at most kMaxCacheEntryBytes; nothing for a
@@ -247,6 +325,16 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
   std::string skip(expected.data().size(), '\0');
   r.bytes(skip.data(), skip.size());
 
+  const auto image_count = r.value<std::uint64_t>();
+  if (!r.ok() || image_count > r.left()) return std::nullopt;
+  std::vector<std::shared_ptr<const TextureImage>> images;
+  for (std::uint64_t i = 0; i < image_count && r.ok(); ++i) {
+    auto image = std::make_shared<TextureImage>();
+    image->mime_type = r.text();
+    const std::string bytes = r.text();
+    image->bytes.assign(bytes.begin(), bytes.end());
+    images.push_back(std::move(image));
+  }
   const auto count = r.value<std::uint64_t>();
   if (!r.ok() || count > r.left()) return std::nullopt;
   std::vector<Fragment> fragments(static_cast<std::size_t>(count));
@@ -260,23 +348,12 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
     for (Vec3& v : f.mesh.vertices) r.bytes(v.data(), 3 * sizeof(double));
     for (Triangle& t : f.mesh.triangles) r.bytes(t.data(), 3 * sizeof(std::int32_t));
     r.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
-    // Attribute values per face; the frame (layout, slots, cut style) is the solid's.
-    const auto corner_values = r.value<std::uint64_t>();
-    const auto materials = r.value<std::uint64_t>();
-    if (!r.ok() || corner_values > r.left() / sizeof(double) || materials > r.left() / sizeof(std::int32_t))
-      return std::nullopt;
-    if (corner_values > 0 || materials > 0) {
-      copy_attribute_frame(solid, f.mesh);
-      f.mesh.attributes.corners.resize(static_cast<std::size_t>(corner_values));
-      f.mesh.attributes.materials.resize(static_cast<std::size_t>(materials));
-      r.bytes(f.mesh.attributes.corners.data(), f.mesh.attributes.corners.size() * sizeof(double));
-      r.bytes(f.mesh.attributes.materials.data(), f.mesh.attributes.materials.size() * sizeof(std::int32_t));
-    }
     r.bytes(&f.mass.volume, sizeof(double));
     r.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     r.bytes(f.mass.inertia.data(), 9 * sizeof(double));
-    if (!r.ok() || !plausible(f) || f.mesh.attributes.empty() != solid.attributes.empty()) return std::nullopt;
-    if (!check_attributes(f.mesh, "cache")) return std::nullopt;
+    if (!read_attributes(r, f.mesh.attributes, images)) return std::nullopt;
+    if (!r.ok() || !plausible(f)) return std::nullopt;
+    if (!f.mesh.attributes.empty() && !check_attributes(f.mesh, "cache")) return std::nullopt;
     for (const Triangle& t : f.mesh.triangles)
       for (const std::int32_t i : t)
         if (i < 0 || static_cast<std::uint64_t>(i) >= nv) return std::nullopt;
@@ -292,6 +369,12 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
   if (ec) return false;
   Writer w;
   write_header(w, key_hash(solid, key), solid, key);
+  const std::vector<const TextureImage*> images = images_of(fragments);
+  w.value(static_cast<std::uint64_t>(images.size()));
+  for (const TextureImage* image : images) {
+    w.text(image->mime_type);
+    w.text(std::string(image->bytes.begin(), image->bytes.end()));
+  }
   w.value(static_cast<std::uint64_t>(fragments.size()));
   for (const Fragment& f : fragments) {
     w.value(static_cast<std::uint64_t>(f.mesh.vertices.size()));
@@ -299,13 +382,10 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
     for (const Vec3& v : f.mesh.vertices) w.bytes(v.data(), 3 * sizeof(double));
     for (const Triangle& t : f.mesh.triangles) w.bytes(t.data(), 3 * sizeof(std::int32_t));
     w.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
-    w.value(static_cast<std::uint64_t>(f.mesh.attributes.corners.size()));
-    w.value(static_cast<std::uint64_t>(f.mesh.attributes.materials.size()));
-    w.bytes(f.mesh.attributes.corners.data(), f.mesh.attributes.corners.size() * sizeof(double));
-    w.bytes(f.mesh.attributes.materials.data(), f.mesh.attributes.materials.size() * sizeof(std::int32_t));
     w.bytes(&f.mass.volume, sizeof(double));
     w.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     w.bytes(f.mass.inertia.data(), 9 * sizeof(double));
+    write_attributes(w, f.mesh.attributes, images);
   }
   const std::uint64_t sum = checksum(w.data().data(), w.data().size());
   w.value(sum);

@@ -3,7 +3,7 @@
 /// the cache").
 ///
 /// Design note. The key is a 64-bit FNV-1a hash over everything that decides the fragments: the
-/// solid's exact bytes (vertices, triangles, face tags), the fracturer's name, the fragment count, the
+/// solid's exact bytes (vertices, triangles, face tags, attributes), the fracturer's name, the fragment count, the
 /// seed and explicit planes, and the identity of the code that fractures: the commit plus the size
 /// and modification time of the running executable, so a rebuild (even of uncommitted changes) never
 /// reads an old answer. A file also stores its parameters and the solid's counts and is checked on
@@ -11,8 +11,9 @@
 /// damaged (checksum), holds a non-finite number or an unknown face tag, is not a regular file, is
 /// larger than kMaxCacheEntryBytes (checked before reading) or unreadable is a miss, never an error:
 /// the pre-fracture is computed again and the entry replaced. Fragments
-/// are stored bit for bit (vertices and mass properties as raw doubles), so a cached run is identical
-/// to a computed one. Files are written atomically; the folder is created on first use. A folder that
+/// are stored bit for bit (vertices, mass properties and every attribute value as raw doubles;
+/// material slots whole, an embedded image once per file however many fragments share it), so a
+/// cached run is identical to a computed one. Files are written atomically; the folder is created on first use. A folder that
 /// cannot be created or written disables the cache for the run (reported as a skip reason, not an
 /// error: the cache is an optimisation).
 ///

@@ -28,7 +28,7 @@ namespace fs = std::filesystem;
 const std::vector<std::vector<std::string>>& layers() {
   static const std::vector<std::vector<std::string>> l = {
       {"algorithms/core"},
-      {"algorithms/fracture", "algorithms/bonds", "algorithms/repair"},
+      {"algorithms/fracture", "algorithms/bonds", "algorithms/repair", "algorithms/assets"},
       {"algorithms/stress"},
       {"algorithms/registry"},
       {"harness/limits.h", "harness/output", "harness/process"},

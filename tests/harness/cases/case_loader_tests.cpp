@@ -278,7 +278,7 @@ TEST_CASE("cases: structural errors name the key", "[cases]") {
                 {": mesh: \"box\" and \"sphere\" are exclusive"});
   require_error(R"({"mesh": {"box": {"size": [1, 1, 1]}, "scale": 2}})", {": mesh.scale: only allowed with \"file\""});
   require_error(R"({"mesh": {"file": "nope.off"}})", {": mesh.file: mesh file \"nope.off\" not found"});
-  require_error(R"({"mesh": {"file": "mesh.stl"}})", {": mesh.file: expected a .off or .obj file"});
+  require_error(R"({"mesh": {"file": "mesh.xyz"}})", {": mesh.file: expected a mesh file (.off, .obj, .gltf, .glb"});
   require_error("{" + box_mesh + R"(, "prefracture": {"fracturer": "voronoi",
       "planes": [{"point": [0, 0, 0], "normal": [1, 0, 0]}]}})",
                 {": prefracture: \"fracturer\" and \"planes\" are exclusive"});

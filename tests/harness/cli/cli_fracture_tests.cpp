@@ -57,9 +57,39 @@ TEST_CASE("cli: fracture prints the contract JSON and writes the fragments", "[c
   for (const auto& e : fs::directory_iterator(dir / "frags")) files += e.path().extension() == ".obj";
   CHECK(files == n);
   CHECK(fs::exists(dir / "frags" / "fragment_000.obj"));
+  CHECK(fs::exists(dir / "frags" / "fragments.glb"));  // written with or without attributes
   auto back = read_obj(dir / "frags" / "fragment_000.obj");
   REQUIRE(back.ok());
   CHECK(back->triangle_count() > 0);
+}
+
+TEST_CASE("cli: fracture reads a textured glTF and writes materials, UVs and a glTF of the fragments", "[cli][assets]") {
+  const fs::path box = "/usr/share/assimp/models/glTF2/BoxTextured-glTF-Binary/BoxTextured.glb";
+  REQUIRE(fs::exists(box));  // assimp-testmodels (scripts/install-deps)
+  const fs::path dir = scratch("fracture_glb");
+  const auto run = test::run_cli("fracture --mesh " + box.string() + " --algo plane-slice --fragments 4 --seed 1 --out " +
+                                 (dir / "frags").string());
+  INFO(run.err);
+  REQUIRE(run.exit_code == 0);
+  const auto j = nlohmann::json::parse(run.out);
+  CHECK(j.at("metrics").at("all_closed").get<bool>());
+  CHECK(j.at("metrics").at("volume_error").get<double>() <= 1e-9);  // the box is 1 m^3, split exactly
+  CHECK(fs::exists(dir / "frags" / "fragments.glb"));
+  REQUIRE(fs::exists(dir / "frags" / "fragments.mtl"));
+  // Every fragment names the shared library; cut faces carry the interior material, the rest the box's.
+  const Result<Mesh> back = read_obj(dir / "frags" / "fragment_000.obj");
+  REQUIRE(back.ok());
+  CHECK(back->attributes.layout.normals);
+  CHECK(back->attributes.layout.uv_sets == 1);
+  bool interior = false, texture = false;
+  for (std::size_t f = 0; f < back->triangles.size(); ++f) {
+    const std::string& name = back->attributes.slots[static_cast<std::size_t>(back->attributes.materials[f])].name;
+    CHECK(name == (back->tags[f] == FaceTag::cut ? "interior" : "Texture"));
+    interior = interior || name == "interior";
+    texture = texture || name == "Texture";
+  }
+  CHECK(interior);
+  CHECK(texture);
 }
 
 TEST_CASE("cli: without --out nothing is written", "[cli]") {
