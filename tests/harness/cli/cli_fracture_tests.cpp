@@ -74,6 +74,14 @@ TEST_CASE("cli: fracture reads a textured glTF and writes materials, UVs and a g
   const auto j = nlohmann::json::parse(run.out);
   CHECK(j.at("metrics").at("all_closed").get<bool>());
   CHECK(j.at("metrics").at("volume_error").get<double>() <= 1e-9);  // the box is 1 m^3, split exactly
+  // The attribute error: the texture mapping reproduced to round-off, every face in its material.
+  const auto& a = j.at("metrics").at("attributes");
+  REQUIRE(a.is_object());
+  CHECK(a.at("samples").get<int>() == 1000);
+  CHECK(a.at("uv_error").get<double>() < 1e-12);
+  CHECK(a.at("normal_error").get<double>() < 1e-12);
+  CHECK(a.at("cap_normal_error").get<double>() < 1e-12);
+  CHECK(a.at("material_errors").get<int>() == 0);
   CHECK(fs::exists(dir / "frags" / "fragments.glb"));
   REQUIRE(fs::exists(dir / "frags" / "fragments.mtl"));
   // Every fragment names the shared library; cut faces carry the interior material, the rest the box's.
