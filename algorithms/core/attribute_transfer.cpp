@@ -15,13 +15,35 @@ void copy_material(Mesh& dst, const Mesh& src, std::size_t f) {
   if (!src.attributes.materials.empty()) dst.attributes.materials.push_back(src.attributes.materials[f]);
 }
 
-/// Appends the corner values of a planar face with unit normal `n` at positions `p`: the cut-face
-/// dressing of the file comment of attribute_transfer.h (normal, planar UVs, tangent).
-void append_planar_corners(MeshAttributes& attr, const Vec3& n, const std::array<Vec3, 3>& p, double scale) {
-  const AttributeLayout& layout = attr.layout;
-  const std::array<Vec3, 2> e = cut_plane_basis(n);
+/// A plane's cut-face frame: its unit normal, the basis of cut_plane_basis and the tangent's handedness.
+struct PlanarFrame {
+  Vec3 given = Vec3::Zero();  // the normal as the caller gave it (any length)
+  Vec3 n = Vec3::UnitZ();
+  std::array<Vec3, 2> e{Vec3::UnitX(), Vec3::UnitY()};
+  double handedness = 1.0;
+};
+
+/// The frame of `normal`. A cut's cap faces all share one normal, so the last frame is kept (one per
+/// thread) instead of being rebuilt for every cap triangle.
+const PlanarFrame& planar_frame(const Vec3& normal) {
+  thread_local PlanarFrame last;
+  if (normal == last.given && last.given != Vec3::Zero()) return last;
+  last.given = normal;
+  last.n = normal.normalized();
+  last.e = cut_plane_basis(last.n);
   // Handedness: +1 when n is the canonical normal e1 x e2, -1 on the crack's other face.
-  const double handedness = e[0].cross(e[1]).dot(n) >= 0.0 ? 1.0 : -1.0;
+  last.handedness = last.e[0].cross(last.e[1]).dot(last.n) >= 0.0 ? 1.0 : -1.0;
+  return last;
+}
+
+/// Appends the corner values of a planar face with normal `normal` at positions `p`: the cut-face
+/// dressing of the file comment of attribute_transfer.h (normal, planar UVs, tangent).
+void append_planar_corners(MeshAttributes& attr, const Vec3& normal, const std::array<Vec3, 3>& p, double scale) {
+  const AttributeLayout& layout = attr.layout;
+  const PlanarFrame& frame = planar_frame(normal);
+  const Vec3& n = frame.n;
+  const std::array<Vec3, 2>& e = frame.e;
+  const double handedness = frame.handedness;
   for (const Vec3& q : p) {
     if (layout.normals) attr.corners.insert(attr.corners.end(), {n.x(), n.y(), n.z()});
     for (int set = 0; set < layout.uv_sets; ++set)
@@ -47,9 +69,16 @@ void add_triangle_from(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a
   copy_material(dst, src, f);
   const std::size_t n = stride_of(src.attributes);
   if (n == 0) return;
+  std::vector<double>& out = dst.attributes.corners;
+  if (order[0] == 0 && order[1] == 1 && order[2] == 2) {
+    // The common case, a triangle copied whole: its three corners are contiguous.
+    const double* values = src.attributes.corner(f, 0);
+    out.insert(out.end(), values, values + 3 * n);
+    return;
+  }
   for (const int k : order) {
     const double* values = src.attributes.corner(f, k);
-    dst.attributes.corners.insert(dst.attributes.corners.end(), values, values + n);
+    out.insert(out.end(), values, values + n);
   }
 }
 
@@ -63,8 +92,14 @@ void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t 
   std::vector<double>& out = dst.attributes.corners;
   for (const CornerMix& m : mix) {
     const double* from = src.attributes.corner(f, m.from);
+    if (m.from == m.to || m.t == 0.0) {  // an original corner: its values as they are
+      out.insert(out.end(), from, from + n);
+      continue;
+    }
     const double* to = src.attributes.corner(f, m.to);
-    for (std::size_t i = 0; i < n; ++i) out.push_back(from[i] + m.t * (to[i] - from[i]));
+    const std::size_t at = out.size();
+    out.resize(at + n);
+    for (std::size_t i = 0; i < n; ++i) out[at + i] = from[i] + m.t * (to[i] - from[i]);
   }
 }
 
@@ -108,7 +143,7 @@ void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c,
   if (!attr.slots.empty()) attr.materials.push_back(attr.cut.material);
   if (attr.layout.empty()) return;
   const double scale = attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0;
-  append_planar_corners(attr, outward_normal.normalized(),
+  append_planar_corners(attr, outward_normal,
                         {dst.vertices[static_cast<std::size_t>(a)], dst.vertices[static_cast<std::size_t>(b)],
                          dst.vertices[static_cast<std::size_t>(c)]},
                         scale);
@@ -218,7 +253,7 @@ void transfer_attributes(const Mesh& from, Mesh& to) {
     }
     Vec3 normal = (p[1] - p[0]).cross(p[2] - p[0]);
     if (!(normal.squaredNorm() > 0.0)) normal = Vec3::UnitZ();
-    append_planar_corners(attr, normal.normalized(), {p[0], p[1], p[2]}, scale);
+    append_planar_corners(attr, normal, {p[0], p[1], p[2]}, scale);
   }
 }
 

@@ -44,7 +44,11 @@ SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below
   attributed_ = has_attributes(mesh);
   outline_.clear();
   for (Mesh* half : halves_) {
-    if (attributed_) copy_attribute_frame(mesh, *half);
+    if (attributed_) {
+      copy_attribute_frame(mesh, *half);
+      half->attributes.corners.reserve(mesh.attributes.corners.size() / 2 + 48 * mesh.attributes.layout.stride());
+      half->attributes.materials.reserve(mesh.attributes.materials.size() / 2 + 16);
+    }
     half->vertices.reserve(mesh.vertices.size() / 2 + 16);
     half->triangles.reserve(mesh.triangles.size() / 2 + 16);
     half->tags.reserve(mesh.triangles.size() / 2 + 16);
@@ -90,9 +94,11 @@ std::int32_t MeshSlicer::index_in(Side side, std::int32_t ref) {
 void MeshSlicer::emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2) {
   if (!attributed_) {
     halves_[side]->add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), mesh_->tags[f]);
+  } else if (const Triangle& source = mesh_->triangles[f]; r0 == source[0] && r1 == source[1] && r2 == source[2]) {
+    // A triangle wholly on one side: copied with its corners as they are.
+    add_triangle_from(*halves_[side], *mesh_, f, index_in(side, r0), index_in(side, r1), index_in(side, r2));
   } else {
     // Each corner as a mix of the source triangle's corners, at the parameter of its position.
-    const Triangle& source = mesh_->triangles[f];
     const auto corner_of = [&](std::int32_t v) { return v == source[0] ? 0 : v == source[1] ? 1 : 2; };
     const auto mix_of = [&](std::int32_t ref) -> CornerMix {
       if (ref < vertex_count_) {

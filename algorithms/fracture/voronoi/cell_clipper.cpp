@@ -109,10 +109,17 @@ bool CellClipper::clip(int site, std::span<const Plane> planes, const CellPolyto
   for (auto& edges : cap_edges_) edges.clear();
   edge_points_.clear();
   out_ = Mesh{};
-  if (attributed_) copy_attribute_frame(*solid_, out_);
   // The site's own triangles and the mixed ones near the cell, merged in index order.
   const std::int32_t* owned = owned_.data() + owned_start_[static_cast<std::size_t>(site)];
   const std::int32_t* owned_end = owned_.data() + owned_start_[static_cast<std::size_t>(site) + 1];
+  if (attributed_) {
+    copy_attribute_frame(*solid_, out_);
+    // Room for the owned triangles' corners and some cut ones, so that the copies do not reallocate.
+    const auto owned_count = static_cast<std::size_t>(owned_end - owned);
+    out_.attributes.corners.reserve((owned_count + owned_count / 4 + 64) * 3 *
+                                    static_cast<std::size_t>(solid_->attributes.layout.stride()));
+    out_.attributes.materials.reserve(owned_count + owned_count / 4 + 64);
+  }
   std::size_t m = 0;
   const auto next_mixed = [&] {
     while (m < mixed_.size() && !overlaps(mixed_bounds_[m], bounds)) ++m;
