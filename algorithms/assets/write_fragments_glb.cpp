@@ -1,10 +1,11 @@
 #include "algorithms/assets/write_fragments_glb.h"
 
+#include "algorithms/core/mesh_text.h"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -284,12 +285,7 @@ Status write_fragments_glb(const std::filesystem::path& path, std::span<const Fr
     append_u32(out, 0x004E4942u);  // "BIN\0"
     out.append(reinterpret_cast<const char*>(bin.data()), bin.size());
   }
-  std::FILE* file = std::fopen(path.string().c_str(), "wb");
-  if (file == nullptr) return Error{path.string() + ": cannot write: " + std::strerror(errno)};
-  const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) return Error{path.string() + ": write failed: " + std::strerror(errno)};
-  return {};
+  return write_file_bytes(out, path);
 }
 
 }  // namespace shatter

@@ -11,8 +11,14 @@ namespace {
 
 std::size_t stride_of(const MeshAttributes& a) { return static_cast<std::size_t>(a.layout.stride()); }
 
-void copy_material(Mesh& dst, const Mesh& src, std::size_t f) {
+/// Appends triangle (a, b, c) of `dst` with the tag and material of triangle `f` of `src`, and returns
+/// how many values each of its corners must get next (0 when `src` carries none).
+std::size_t start_triangle_from(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b,
+                                std::int32_t c) {
+  dst.add_triangle(a, b, c, src.tags[f]);
+  if (src.attributes.empty()) return 0;
   if (!src.attributes.materials.empty()) dst.attributes.materials.push_back(src.attributes.materials[f]);
+  return stride_of(src.attributes);
 }
 
 /// A plane's cut-face frame: its unit normal, the basis of cut_plane_basis and the tangent's handedness.
@@ -64,10 +70,7 @@ void copy_attribute_frame(const Mesh& src, Mesh& dst) {
 
 void add_triangle_from(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
                        const std::array<int, 3>& order) {
-  dst.add_triangle(a, b, c, src.tags[f]);
-  if (src.attributes.empty()) return;
-  copy_material(dst, src, f);
-  const std::size_t n = stride_of(src.attributes);
+  const std::size_t n = start_triangle_from(dst, src, f, a, b, c);
   if (n == 0) return;
   std::vector<double>& out = dst.attributes.corners;
   if (order[0] == 0 && order[1] == 1 && order[2] == 2) {
@@ -84,10 +87,7 @@ void add_triangle_from(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a
 
 void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
                         const std::array<CornerMix, 3>& mix) {
-  dst.add_triangle(a, b, c, src.tags[f]);
-  if (src.attributes.empty()) return;
-  copy_material(dst, src, f);
-  const std::size_t n = stride_of(src.attributes);
+  const std::size_t n = start_triangle_from(dst, src, f, a, b, c);
   if (n == 0) return;
   std::vector<double>& out = dst.attributes.corners;
   for (const CornerMix& m : mix) {
@@ -105,17 +105,13 @@ void add_triangle_mixed(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t 
 
 void add_triangle_weighted(Mesh& dst, const Mesh& src, std::size_t f, std::int32_t a, std::int32_t b, std::int32_t c,
                            const std::array<CornerWeights, 3>& weights) {
-  dst.add_triangle(a, b, c, src.tags[f]);
-  if (src.attributes.empty()) return;
-  copy_material(dst, src, f);
-  const std::size_t n = stride_of(src.attributes);
+  const std::size_t n = start_triangle_from(dst, src, f, a, b, c);
   if (n == 0) return;
-  const double* v0 = src.attributes.corner(f, 0);
-  const double* v1 = src.attributes.corner(f, 1);
-  const double* v2 = src.attributes.corner(f, 2);
   std::vector<double>& out = dst.attributes.corners;
-  for (const CornerWeights& w : weights)
-    for (std::size_t i = 0; i < n; ++i) out.push_back(w[0] * v0[i] + w[1] * v1[i] + w[2] * v2[i]);
+  for (const CornerWeights& w : weights) {
+    out.resize(out.size() + n);
+    interpolate_corners(src.attributes, f, Vec3(w[0], w[1], w[2]), out.data() + out.size() - n);
+  }
 }
 
 std::array<Vec3, 2> cut_plane_basis(const Vec3& normal) {

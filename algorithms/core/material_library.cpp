@@ -4,26 +4,10 @@
 #include "algorithms/core/mesh_text.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
-#include <cstring>
 #include <string_view>
 
 namespace shatter {
-namespace {
-
-/// The tokens from `first` on, joined by single spaces (a name or path written with spaces).
-std::string joined(const std::vector<std::string_view>& tokens, std::size_t first) {
-  std::string out;
-  for (std::size_t i = first; i < tokens.size(); ++i) {
-    if (i > first) out += ' ';
-    out += tokens[i];
-  }
-  return out;
-}
-
-}  // namespace
-
 Result<std::vector<MaterialSlot>> read_mtl(const std::filesystem::path& path, const MeshReadLimits& limits) {
   const std::string file = path.string();
   Result<std::string> text = read_file_bounded(path, limits.max_file_bytes, "material library");
@@ -51,7 +35,7 @@ Result<std::vector<MaterialSlot>> read_mtl(const std::filesystem::path& path, co
     if (key == "newmtl") {
       if (tokens.size() < 2) return fail("'newmtl' without a material name");
       MaterialSlot slot;
-      slot.name = joined(tokens, 1);
+      slot.name = joined_tokens(tokens, 1);
       const auto same = std::find_if(slots.begin(), slots.end(), [&](const MaterialSlot& s) { return s.name == slot.name; });
       if (same != slots.end()) slots.erase(same);  // the later definition wins
       slots.push_back(std::move(slot));
@@ -73,7 +57,7 @@ Result<std::vector<MaterialSlot>> read_mtl(const std::filesystem::path& path, co
       if (tokens.size() < 2) return fail("'map_Kd' without a file");
       // Options (-s, -o, -bm, ...) come first: then the file is the last token; without options the
       // whole rest is the file, spaces included.
-      slot.base_color_texture = tokens[1].starts_with("-") ? std::string(tokens.back()) : joined(tokens, 1);
+      slot.base_color_texture = tokens[1].starts_with("-") ? std::string(tokens.back()) : joined_tokens(tokens, 1);
     }
   }
   return slots;
@@ -89,12 +73,7 @@ Status write_mtl(std::span<const MaterialSlot> slots, const std::filesystem::pat
     out.append(buffer, static_cast<std::size_t>(n));
     if (!s.base_color_texture.empty()) out += "map_Kd " + s.base_color_texture + "\n";
   }
-  std::FILE* file = std::fopen(path.string().c_str(), "wb");
-  if (file == nullptr) return Error{path.string() + ": cannot write: " + std::strerror(errno)};
-  const bool written = std::fwrite(out.data(), 1, out.size(), file) == out.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) return Error{path.string() + ": write failed: " + std::strerror(errno)};
-  return {};
+  return write_file_bytes(out, path);
 }
 
 }  // namespace shatter

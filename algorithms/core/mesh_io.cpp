@@ -40,15 +40,6 @@ std::optional<OffVertexLayout> off_layout(std::string_view s) {
   return layout;
 }
 
-Status write_text(const std::string& text, const std::filesystem::path& path) {
-  std::FILE* file = std::fopen(path.string().c_str(), "wb");
-  if (file == nullptr) return Error{path.string() + ": cannot write: " + std::strerror(errno)};
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  const bool closed = std::fclose(file) == 0;
-  if (!written || !closed) return Error{path.string() + ": write failed: " + std::strerror(errno)};
-  return {};
-}
-
 void append_vertex(std::string& out, const char* prefix, const Vec3& p) {
   char buffer[96];
   const int n = std::snprintf(buffer, sizeof buffer, "%s%.17g %.17g %.17g\n", prefix, p.x(), p.y(), p.z());
@@ -244,7 +235,7 @@ Status write_obj(const Mesh& mesh, const std::filesystem::path& path, const std:
       library = path.stem().string() + ".mtl";
       if (Status s = write_mtl(mesh.attributes.slots, path.parent_path() / library); !s) return s;
     }
-    return write_text(attributed_obj_text(mesh, library), path);
+    return write_file_bytes(attributed_obj_text(mesh, library), path);
   }
   std::string out = "# shatterbench mesh\n";
   out.reserve(mesh.vertices.size() * 60 + mesh.triangles.size() * 24);
@@ -255,7 +246,7 @@ Status write_obj(const Mesh& mesh, const std::filesystem::path& path, const std:
     for (std::size_t f = 0; f < mesh.triangles.size(); ++f)
       if (mesh.tags[f] == tag) append_face(out, "f ", mesh.triangles[f], 1);
   }
-  return write_text(out, path);
+  return write_file_bytes(out, path);
 }
 
 Status write_off(const Mesh& mesh, const std::filesystem::path& path) {
@@ -263,7 +254,7 @@ Status write_off(const Mesh& mesh, const std::filesystem::path& path) {
   out.reserve(mesh.vertices.size() * 60 + mesh.triangles.size() * 24);
   for (const Vec3& p : mesh.vertices) append_vertex(out, "", p);
   for (const Triangle& t : mesh.triangles) append_face(out, "3 ", t, 0);
-  return write_text(out, path);
+  return write_file_bytes(out, path);
 }
 
 }  // namespace shatter

@@ -1,6 +1,9 @@
 #include "algorithms/core/mesh_text.h"
 
 #include <cctype>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
@@ -69,6 +72,24 @@ Result<std::int64_t> parse_integer(std::string_view token) {
   if (s.empty() || s.front() == '+' || ec != std::errc{} || end != s.data() + s.size())
     return Error{"non-numeric token " + quoted(token)};
   return value;
+}
+
+std::string joined_tokens(const std::vector<std::string_view>& tokens, std::size_t first) {
+  std::string out;
+  for (std::size_t i = first; i < tokens.size(); ++i) {
+    if (i > first) out += ' ';
+    out += tokens[i];
+  }
+  return out;
+}
+
+Status write_file_bytes(std::string_view bytes, const std::filesystem::path& path) {
+  std::FILE* file = std::fopen(path.string().c_str(), "wb");
+  if (file == nullptr) return Error{path.string() + ": cannot write: " + std::strerror(errno)};
+  const bool written = std::fwrite(bytes.data(), 1, bytes.size(), file) == bytes.size();
+  const bool closed = std::fclose(file) == 0;
+  if (!written || !closed) return Error{path.string() + ": write failed: " + std::strerror(errno)};
+  return {};
 }
 
 }  // namespace shatter

@@ -1,11 +1,13 @@
 #pragma once
-/// The lexical layer of the mesh readers: lines, tokens and strict numbers. Every reader splits its
-/// text here, so that "\n", "\r\n" and a lone "\r" (classic Mac) all end a line and every limit that
-/// counts lines or statements holds whatever the line endings.
+/// The lexical layer of the mesh readers and writers: lines, tokens and strict numbers, and the one
+/// file writer. Every reader splits its text here, so that "\n", "\r\n" and a lone "\r" (classic
+/// Mac) all end a line and every limit that counts lines or statements holds whatever the line endings.
 
 #include "algorithms/core/result.h"
 
 #include <cstdint>
+#include <filesystem>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -38,5 +40,11 @@ Result<double> parse_finite_double(std::string_view token);
 /// A token read whole as a decimal integer with an optional sign; an error saying why when it is not
 /// one or does not fit 64 bits.
 Result<std::int64_t> parse_integer(std::string_view token);
+
+/// The tokens from `first` on, joined by single spaces (a name or path written with spaces).
+std::string joined_tokens(const std::vector<std::string_view>& tokens, std::size_t first);
+
+/// Writes `bytes` to `path` (created or truncated); an error names the file and the system's reason.
+Status write_file_bytes(std::string_view bytes, const std::filesystem::path& path);
 
 }  // namespace shatter

@@ -107,16 +107,6 @@ Result<Corner> parse_corner(std::string_view token, const std::array<std::int64_
   return c;
 }
 
-/// The tokens from `first` on, joined by single spaces (a material or file name written with spaces).
-std::string joined(const std::vector<std::string_view>& tokens, std::size_t first) {
-  std::string out;
-  for (std::size_t i = first; i < tokens.size(); ++i) {
-    if (i > first) out += ' ';
-    out += tokens[i];
-  }
-  return out;
-}
-
 /// The material libraries an OBJ named, read as their `mtllib` statements are met.
 struct Libraries {
   std::vector<std::string> names;     ///< as the `mtllib` statements wrote them
@@ -219,7 +209,7 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
                                     : FaceTag::surface;
     } else if (key == "usemtl") {
       if (tokens.size() < 2) return fail(line, "'usemtl' without a material name");
-      const std::string name = joined(tokens, 1);
+      const std::string name = joined_tokens(tokens, 1);
       const auto found = std::find(used.begin(), used.end(), name);
       material = static_cast<std::int32_t>(found - used.begin());
       if (found == used.end()) {
@@ -230,7 +220,7 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
       if (tokens.size() < 2) return fail(line, "'mtllib' without a file name");
       // Each token is one library (the format's rule); a name with spaces is tried whole first.
       std::error_code ec;
-      std::vector<std::string> names = {joined(tokens, 1)};
+      std::vector<std::string> names = {joined_tokens(tokens, 1)};
       if (tokens.size() > 2 && !std::filesystem::exists(path.parent_path() / names[0], ec))
         names.assign(tokens.begin() + 1, tokens.end());
       for (const std::string& name : names) {
