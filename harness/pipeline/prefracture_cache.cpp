@@ -146,6 +146,7 @@ class Reader {
       ok_ = false;
       return;
     }
+    if (n == 0) return;  // an empty block may come with a null destination (an empty vector's data())
     std::memcpy(p, in_.data() + pos_, n);
     pos_ += n;
   }
