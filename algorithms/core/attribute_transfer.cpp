@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace shatter {
@@ -275,6 +276,10 @@ Status check_attributes(const Mesh& mesh, const std::string& who) {
     if (attr.materials[f] < 0 || attr.materials[f] >= slots)
       return Error{who + ": triangle " + std::to_string(f) + " has material " + std::to_string(attr.materials[f]) +
                    " of " + std::to_string(slots) + " slots"};
+  // One branch-free pass (it vectorises; NaN fails the comparison), then the first offender on failure.
+  bool finite = true;
+  for (const double v : attr.corners) finite &= std::abs(v) <= std::numeric_limits<double>::max();
+  if (finite) return {};
   const std::size_t n = stride_of(attr);
   for (std::size_t i = 0; i < attr.corners.size(); ++i)
     if (!std::isfinite(attr.corners[i]))

@@ -17,9 +17,11 @@ std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
 
 }  // namespace
 
-SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above) {
+SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
+                               CornerProvenance* provenance) {
   error_.clear();
   mesh_ = &mesh;
+  provenance_ = provenance;
   plane_ = plane;
   vertex_count_ = static_cast<std::int32_t>(mesh.vertices.size());
   side_.resize(mesh.vertices.size());
@@ -91,25 +93,42 @@ std::int32_t MeshSlicer::index_in(Side side, std::int32_t ref) {
   return idx;
 }
 
+std::array<CornerMix, 3> MeshSlicer::corner_mixes(std::size_t f, std::int32_t r0, std::int32_t r1,
+                                                  std::int32_t r2) const {
+  // Each corner as a mix of the source triangle's corners, at the parameter of its position.
+  const Triangle& source = mesh_->triangles[f];
+  const auto corner_of = [&](std::int32_t v) { return v == source[0] ? 0 : v == source[1] ? 1 : 2; };
+  const auto mix_of = [&](std::int32_t ref) -> CornerMix {
+    if (ref < vertex_count_) {
+      const int k = corner_of(ref);
+      return {k, k, 0.0};
+    }
+    const CrossingEnds& e = crossing_ends_[static_cast<std::size_t>(ref - vertex_count_)];
+    return {corner_of(e.p), corner_of(e.m), e.t};
+  };
+  return {mix_of(r0), mix_of(r1), mix_of(r2)};
+}
+
 void MeshSlicer::emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2) {
   if (!attributed_) {
     halves_[side]->add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), mesh_->tags[f]);
+  } else if (provenance_ != nullptr) {
+    const Triangle& source = mesh_->triangles[f];
+    std::int32_t record = mesh_->attributes.materials[f];
+    if (r0 != source[0] || r1 != source[1] || r2 != source[2]) {
+      // Cut: a new record of how each corner mixes the parent's, unless the parent is a cap (a piece
+      // of a cap is still a cap of the same plane).
+      if (!CornerProvenance::is_cap(record)) record = provenance_->mixed(record, corner_mixes(f, r0, r1, r2));
+    }
+    Mesh& half = *halves_[side];
+    half.add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), mesh_->tags[f]);
+    half.attributes.materials.push_back(record);
   } else if (const Triangle& source = mesh_->triangles[f]; r0 == source[0] && r1 == source[1] && r2 == source[2]) {
     // A triangle wholly on one side: copied with its corners as they are.
     add_triangle_from(*halves_[side], *mesh_, f, index_in(side, r0), index_in(side, r1), index_in(side, r2));
   } else {
-    // Each corner as a mix of the source triangle's corners, at the parameter of its position.
-    const auto corner_of = [&](std::int32_t v) { return v == source[0] ? 0 : v == source[1] ? 1 : 2; };
-    const auto mix_of = [&](std::int32_t ref) -> CornerMix {
-      if (ref < vertex_count_) {
-        const int k = corner_of(ref);
-        return {k, k, 0.0};
-      }
-      const CrossingEnds& e = crossing_ends_[static_cast<std::size_t>(ref - vertex_count_)];
-      return {corner_of(e.p), corner_of(e.m), e.t};
-    };
     add_triangle_mixed(*halves_[side], *mesh_, f, index_in(side, r0), index_in(side, r1), index_in(side, r2),
-                       {mix_of(r0), mix_of(r1), mix_of(r2)});
+                       corner_mixes(f, r0, r1, r2));
   }
   if (side != below_side) return;
   // Record the lower half's in-plane half-edges; twins cancel, the rest is the cut outline.
@@ -216,6 +235,22 @@ bool MeshSlicer::add_cap() {
   if (!cap_closes_outline(cap.triangles, cap_edges_, cap_halfedges_)) {
     error_ = "the cap triangulation does not close the cut outline";
     return false;
+  }
+  if (provenance_ != nullptr) {
+    // Tracked pieces: the cap faces carry the record of their side's plane, dressed at the end.
+    const std::int32_t record[2] = {provenance_->cap(plane_.normal), provenance_->cap(-plane_.normal)};
+    for (const Triangle& t : cap.triangles) {
+      const std::int32_t r0 = cap_ref_[static_cast<std::size_t>(t[0])];
+      const std::int32_t r1 = cap_ref_[static_cast<std::size_t>(t[1])];
+      const std::int32_t r2 = cap_ref_[static_cast<std::size_t>(t[2])];
+      halves_[below_side]->add_triangle(index_in(below_side, r0), index_in(below_side, r1),
+                                        index_in(below_side, r2), FaceTag::cut);
+      halves_[above_side]->add_triangle(index_in(above_side, r0), index_in(above_side, r2),
+                                        index_in(above_side, r1), FaceTag::cut);
+      halves_[below_side]->attributes.materials.push_back(record[below_side]);
+      halves_[above_side]->attributes.materials.push_back(record[above_side]);
+    }
+    return true;
   }
   for (const Triangle& t : cap.triangles) {
     const std::int32_t r0 = cap_ref_[static_cast<std::size_t>(t[0])];

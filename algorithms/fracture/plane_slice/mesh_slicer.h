@@ -13,16 +13,19 @@
 ///
 /// Attributes (mesh_attributes.h): a corner at a crossing gets its triangle's two corner values mixed
 /// at the parameter its position was made with, measured from the edge's positive end as the position
-/// is; cap triangles are dressed as cut faces (attribute_transfer.h). A mesh without attributes takes
-/// none of these steps.
+/// is; cap triangles are dressed as cut faces (attribute_transfer.h). A tracked piece (recursive
+/// cuts, corner_provenance.h) records the same mixes instead of evaluating them. A mesh without
+/// attributes takes none of these steps.
 ///
 /// The slicer keeps scratch buffers between calls; one slicer per thread.
 
+#include "algorithms/core/corner_provenance.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/plane_slice/cap_closure.h"
 #include "algorithms/core/cap_triangulator.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <unordered_map>
@@ -45,7 +48,10 @@ class MeshSlicer {
   /// Slices closed, outward `mesh` by `plane`: `below` receives the closed part where
   /// dot(normal, x - point) < 0, `above` the rest; both are overwritten only when the result is `cut`.
   /// Triangles keep their tags and attributes; cap triangles are tagged FaceTag::cut.
-  SliceOutcome slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above);
+  /// With `provenance`, `mesh` is one of its tracked pieces (corner_provenance.h) and so are the halves:
+  /// a face passed on whole keeps its record, a cut face and a cap face get new records.
+  SliceOutcome slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
+                     CornerProvenance* provenance = nullptr);
 
   /// Why the last slice failed (empty unless it returned `failed`).
   [[nodiscard]] const std::string& error() const { return error_; }
@@ -54,6 +60,8 @@ class MeshSlicer {
   enum Side : int { below_side = 0, above_side = 1 };
   std::int32_t crossing(std::int32_t a, std::int32_t b);
   std::int32_t index_in(Side side, std::int32_t ref);
+  [[nodiscard]] std::array<CornerMix, 3> corner_mixes(std::size_t f, std::int32_t r0, std::int32_t r1,
+                                                      std::int32_t r2) const;
   void emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2);
   void split_triangle(std::size_t f);
   bool add_cap();
@@ -81,6 +89,7 @@ class MeshSlicer {
   };
   std::vector<CrossingEnds> crossing_ends_;             // per crossing ref - V
   bool attributed_ = false;                             // the sliced mesh carries attributes
+  CornerProvenance* provenance_ = nullptr;              // set when the mesh is a tracked piece
   std::unordered_map<std::uint64_t, std::int32_t> crossing_of_edge_;  // undirected edge -> ref
   std::unordered_map<std::uint64_t, int> outline_;      // lower half's in-plane half-edges, net count
   std::vector<std::int32_t> cap_ref_;                   // cap point -> ref

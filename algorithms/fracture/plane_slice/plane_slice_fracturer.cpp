@@ -1,5 +1,6 @@
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 
+#include "algorithms/core/corner_provenance.h"
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/volume_components.h"
 #include "algorithms/fracture/fracture_limits.h"
@@ -8,13 +9,17 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 
 namespace shatter {
 namespace {
 
-/// The slicing kernel of recursive_slicing.h over MeshSlicer.
+/// The slicing kernel of recursive_slicing.h over MeshSlicer. An attributed solid is cut as tracked
+/// pieces (corner_provenance.h): the corner values are evaluated once, on the fragments.
 class SliceKernel {
  public:
+  explicit SliceKernel(CornerProvenance* provenance) : provenance_(provenance) {}
+
   struct Piece {
     Mesh mesh;
     MassProperties mass;
@@ -26,7 +31,7 @@ class SliceKernel {
              std::vector<Piece>& above) const {
     Mesh lower;
     Mesh upper;
-    const SliceOutcome outcome = slicer_.slice(piece.mesh, plane, lower, upper);
+    const SliceOutcome outcome = slicer_.slice(piece.mesh, plane, lower, upper, provenance_);
     if (outcome == SliceOutcome::failed) ++failed_cuts_;
     if (outcome != SliceOutcome::cut) return;
     append_parts(std::move(lower), below);
@@ -45,21 +50,30 @@ class SliceKernel {
   [[nodiscard]] int failed_cuts() const { return failed_cuts_; }
 
  private:
+  CornerProvenance* provenance_;
   mutable MeshSlicer slicer_;
   mutable int failed_cuts_ = 0;
 };
 
-std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid) {
+/// The solid's volumes as pieces: tracked by `provenance` when given.
+std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid, const CornerProvenance* provenance) {
   std::vector<SliceKernel::Piece> pieces;
-  SliceKernel::append_parts(Mesh(solid), pieces);
+  SliceKernel::append_parts(provenance != nullptr ? provenance->tracked() : Mesh(solid), pieces);
   return pieces;
 }
 
-std::vector<Fragment> to_fragments(std::vector<SliceKernel::Piece>&& pieces) {
+std::vector<Fragment> to_fragments(std::vector<SliceKernel::Piece>&& pieces, const CornerProvenance* provenance) {
   std::vector<Fragment> out;
   out.reserve(pieces.size());
-  for (SliceKernel::Piece& p : pieces) out.push_back({std::move(p.mesh), p.mass});
+  for (SliceKernel::Piece& p : pieces)
+    out.push_back({provenance != nullptr ? provenance->resolve(std::move(p.mesh)) : std::move(p.mesh), p.mass});
   return out;
+}
+
+/// The provenance records of one fracture of `solid`, when it carries attributes.
+std::optional<CornerProvenance> provenance_for(const Mesh& solid) {
+  if (!has_attributes(solid)) return std::nullopt;
+  return std::optional<CornerProvenance>(std::in_place, solid);
 }
 
 }  // namespace
@@ -67,8 +81,11 @@ std::vector<Fragment> to_fragments(std::vector<SliceKernel::Piece>&& pieces) {
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
                                                             const FractureParams& params) const {
   if (Status s = check_fracture_params(solid, params, "plane-slice"); !s) return s.error();
-  const SliceKernel kernel;
-  return to_fragments(slice_recursively(kernel, start_pieces(solid), params.fragments, params.seed));
+  std::optional<CornerProvenance> provenance = provenance_for(solid);
+  CornerProvenance* tracking = provenance ? &*provenance : nullptr;
+  const SliceKernel kernel(tracking);
+  return to_fragments(slice_recursively(kernel, start_pieces(solid, tracking), params.fragments, params.seed),
+                      tracking);
 }
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
@@ -76,11 +93,13 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh
                                                                       SelfIntersectionVerdicts* verdicts) const {
   if (Status s = check_fracture_solid(solid, "plane-slice", verdicts); !s) return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
-  const SliceKernel kernel;
-  auto pieces =
-      slice_by_planes(kernel, start_pieces(solid), planes, static_cast<std::size_t>(std::max(max_fragments, 1)));
+  std::optional<CornerProvenance> provenance = provenance_for(solid);
+  CornerProvenance* tracking = provenance ? &*provenance : nullptr;
+  const SliceKernel kernel(tracking);
+  auto pieces = slice_by_planes(kernel, start_pieces(solid, tracking), planes,
+                                static_cast<std::size_t>(std::max(max_fragments, 1)));
   if (!pieces) return Error{"plane-slice: " + pieces.error().message};
-  return to_fragments(std::move(*pieces));
+  return to_fragments(std::move(*pieces), tracking);
 }
 
 Result<std::optional<CutPlan>> PlaneSliceFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {

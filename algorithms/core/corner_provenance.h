@@ -1,0 +1,65 @@
+#pragma once
+/// Deferred attributes for a fracture that cuts a solid again and again (recursive slicing): the cut
+/// pieces carry, per face, only a record of where its corners came from, and the corner values are
+/// evaluated once, on the final fragments.
+///
+/// Design note: copying every face's corner values (a textured asset: 9 doubles a corner) through
+/// each level of a recursive cut costs as much as the geometry itself, although most faces are only
+/// passed on whole. A tracked piece is an ordinary mesh whose per-face material entry names a record
+/// instead of a material slot; its layout has no corner values, so passing a face on copies one int.
+/// A record is one of three kinds:
+///   - 0..F-1: face r of the solid, its corners as they are;
+///   - F..: a face cut from solid face `face`, each corner a barycentric weight triple over that
+///     face's corners (a corner at a crossing mixes its parent corners' weights at the crossing's
+///     parameter, the rule attribute_transfer.h applies to the values, so the result is the same
+///     linear interpolation);
+///   - negative: a cap of the cut with outward normal `cap_normals[-r - 1]`, dressed as a cut face at
+///     the end (a cap face cut again stays a cap of the same plane).
+/// The records grow with the number of cut faces only (those a plane crosses), not with the solid.
+
+#include "algorithms/core/attribute_transfer.h"
+#include "algorithms/core/mesh.h"
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace shatter {
+
+/// The records of one fracture of one attributed solid (single-threaded: one per fracture).
+class CornerProvenance {
+ public:
+  /// Tracks `solid`, which carries attributes and must outlive this object.
+  explicit CornerProvenance(const Mesh& solid);
+
+  /// The solid's geometry and tags as a tracked piece (each face its own record).
+  [[nodiscard]] Mesh tracked() const;
+
+  /// The record of a face cut from a face of record `parent` (not a cap), corner i mixed as `mix[i]`
+  /// says over the parent face's corners.
+  std::int32_t mixed(std::int32_t parent, const std::array<CornerMix, 3>& mix);
+
+  /// A record for the cap faces of one cut side, with outward normal `outward_normal` (any non-zero
+  /// length): one call per side of a cut, shared by all its cap faces.
+  std::int32_t cap(const Vec3& outward_normal);
+
+  /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated.
+  [[nodiscard]] Mesh resolve(Mesh&& piece) const;
+
+  /// True when `record` names a cap.
+  [[nodiscard]] static bool is_cap(std::int32_t record) { return record < 0; }
+
+ private:
+  struct Cut {
+    std::int32_t face;                    // face of the solid
+    std::array<CornerWeights, 3> weights; // per corner, over that face's corners
+  };
+  [[nodiscard]] Cut cut_of(std::int32_t record) const;
+
+  const Mesh& solid_;
+  std::int32_t solid_faces_;
+  std::vector<Cut> cuts_;          // record solid_faces_ + i
+  std::vector<Vec3> cap_normals_;  // record -(i + 1)
+};
+
+}  // namespace shatter
