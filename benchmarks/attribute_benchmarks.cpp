@@ -4,9 +4,11 @@
 // of a pair differ only by the attribute work. The attributed row carries its attribute error figures.
 //
 //   build/bin/shatter_benchmarks --benchmark_filter='^attributes/' --benchmark_repetitions=5
-// Rows: attributes/<mesh>/<fracturer>/{geometry,attributes}/<n>. Compare the medians of a pair.
+// Rows: attributes/<mesh>/<fracturer>/{geometry,attributes}/<n>. Compare the medians of a pair. The
+// meshes: elephant.off and homer.off whole, and brick-piece, a runtime-sized fragment of a brick.
 
 #include "algorithms/core/attribute_transfer.h"
+#include "algorithms/core/primitives.h"
 #include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/core/surface_mapping.h"
 #include "harness/cases/load_solid.h"
@@ -73,6 +75,22 @@ void fracture_pair(benchmark::State& state, const Registries& registries, const 
   state.counters["material_errors"] = a.material_errors;
 }
 
+/// Fragment 0 of a dressed 0.4 x 0.2 x 0.1 m brick pre-fractured by plane-slice into 40.
+Result<Mesh> brick_piece(const Registries& registries) {
+  Solid brick;
+  brick.mesh = make_box(Vec3(0.4, 0.2, 0.1));
+  Mesh dressed_brick = dressed(brick);
+  auto fracturer = registries.fracturers.create("plane-slice");
+  if (!fracturer) return fracturer.error();
+  FractureParams params;
+  params.fragments = 40;
+  params.seed = 1;
+  auto fragments = (*fracturer)->fracture(dressed_brick, params);
+  if (!fragments) return fragments.error();
+  if (fragments->empty()) return Error{"plane-slice gave no fragment"};
+  return std::move(fragments->front().mesh);
+}
+
 }  // namespace
 
 namespace shatter {
@@ -91,6 +109,15 @@ void register_attribute_benchmarks(const Registries& registries) {
       continue;
     }
     pairs.push_back({name, solid->mesh, dressed(*solid)});
+  }
+  // A runtime-sized piece: one fragment of a dressed brick pre-fractured into 40 (its faces the
+  // brick's surface and earlier cut faces), as a game's runtime fracture meets it.
+  if (Result<Mesh> piece = brick_piece(registries)) {
+    Mesh bare = *piece;
+    bare.attributes = MeshAttributes{};
+    pairs.push_back({"brick-piece", std::move(bare), std::move(*piece)});
+  } else {
+    std::cerr << "shatter_benchmarks: skipping brick-piece: " << piece.error().message << "\n";
   }
   const Registries* reg = &registries;
   for (const Pair& pair : pairs) {

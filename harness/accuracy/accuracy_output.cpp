@@ -81,6 +81,27 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
            "the reference LDL^T solve of the same structure); connection-count computes no forces: no error, only "
            "its most utilized bond against the reference's first failure; front = Pareto front per case\n";
   }
+  if (has_family(points, "colliders")) {
+    out += "\n## colliders\n\n";
+    out += "| case | pieces of | knob | pieces | time ms | largest volume cut off | mean volume cut off "
+           "| points per collider | Pareto |\n";
+    out += "|---|---|---|---:|---:|---:|---:|---:|---|\n";
+    for (const AccuracyPoint& p : points) {
+      if (p.family != "colliders") continue;
+      const std::string fracturer = p.knobs.value("fracturer", std::string("-"));
+      if (p.figures.contains("failed")) {
+        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | {} |\n", p.case_name, fracturer, p.knob,
+                           p.figures["failed"].get<std::string>());
+        continue;
+      }
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", p.case_name, fracturer, p.knob,
+                         cell(p.figures, "pieces"), time_text(p.time_ms), error_text(p),
+                         cell(p.figures, "mean_volume_loss"), cell(p.figures, "mean_points"), front_text(p));
+    }
+    out += "\ntime = building every piece's collider (median of the repetitions); volume cut off = 1 - V(hull of "
+           "the budget's points) / V(hull of all the piece's points), per piece; vertex_budget=0 is the exact "
+           "path; front = Pareto front per case\n";
+  }
   return out;
 }
 

@@ -200,6 +200,14 @@ struct DebrisSpec {
   int lifetime_frames = 90;          ///< frames a particle lives, >= 1
 };
 
+/// `colliders`: how the physics world builds a fragment's collision shape (every field optional).
+struct CollidersSpec {
+  /// `vertex_budget`: at most this many points per collider, the piece's points extreme along a
+  /// fixed spread of directions (harness/pipeline/physics/collider_points.h); 0 = every hull point.
+  /// An approximation: its error is `accuracy`'s colliders family. 0 or 4..256.
+  int vertex_budget = 0;
+};
+
 /// A loaded, checked case. Units are SI.
 struct Case {
   std::string name;                        ///< `name`; defaults to the case file's stem
@@ -221,6 +229,7 @@ struct Case {
   ScheduleSpec schedule;                   ///< `schedule`
   FadeOutSpec fade_out;                    ///< `fade_out`
   DebrisSpec debris;                       ///< `debris`
+  CollidersSpec colliders;                 ///< `colliders`
 };
 
 }  // namespace shatter

@@ -286,6 +286,14 @@ DebrisSpec read_debris(JsonReader& r, const json& v) {
   return d;
 }
 
+CollidersSpec read_colliders(JsonReader& r, const json& v) {
+  CollidersSpec c;
+  if (!r.object(v, "colliders", {"vertex_budget"})) return c;
+  if (r.read(v, "colliders", "vertex_budget", c.vertex_budget) && c.vertex_budget != 0)
+    r.at_least("colliders.vertex_budget", c.vertex_budget, 4) && r.at_most("colliders.vertex_budget", c.vertex_budget, 256);
+  return c;
+}
+
 }  // namespace
 
 std::string_view schedule_mode_name(ScheduleMode mode) {
@@ -328,7 +336,7 @@ Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   const json& root = *parsed;
   JsonReader r(file);
   if (!r.object(root, "", {"name", "description", "mesh", "material", "gravity", "anchors", "prefracture",
-                           "appearance", "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs", "schedule", "fade_out", "debris"}))
+                           "appearance", "impacts", "runtime", "stress", "frames", "budget_ms", "grid", "needs", "schedule", "fade_out", "debris", "colliders"}))
     return r.error();
 
   Case c;
@@ -358,6 +366,7 @@ Result<Case> parse_case_text(std::string_view text, const fs::path& source) {
   if (root.contains("needs")) c.needs = read_needs(r, root["needs"]);
   if (root.contains("schedule")) c.schedule = read_schedule(r, root["schedule"]);
   if (root.contains("fade_out")) c.fade_out = read_fade_out(r, root["fade_out"]);
+  if (root.contains("colliders")) c.colliders = read_colliders(r, root["colliders"]);
   if (root.contains("debris")) c.debris = read_debris(r, root["debris"]);
   if (r.failed()) return r.error();
   return c;

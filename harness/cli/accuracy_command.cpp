@@ -3,6 +3,7 @@
 #include "algorithms/fracture/fem_lite/fem_lite_settings.h"
 #include "algorithms/registry/registries.h"
 #include "harness/accuracy/accuracy_output.h"
+#include "harness/accuracy/collider_accuracy.h"
 #include "harness/accuracy/fracture_accuracy.h"
 #include "harness/accuracy/stress_accuracy.h"
 #include "harness/cases/case_library.h"
@@ -31,12 +32,13 @@ struct AccuracyOptions {
   std::vector<std::string> cases = {"elephant", "wall", "cantilever", "column", "fixed-beam"};
   std::string json;
   int repetitions = 3;
-  std::vector<std::string> families = {"fracture", "stress"};
+  std::vector<std::string> families = {"fracture", "stress", "colliders"};
   std::vector<std::string> fracturers;
   std::vector<std::string> models;
   std::vector<int> fragments = {5, 25, 100};
   std::vector<int> resolutions = {8, 16, 32};
   std::vector<int> slabs = {8, 16, 32, 64};
+  std::vector<int> vertex_budgets = {0, 8, 16, 32, 64};
   bool no_repair = false;
   double cap_uv_scale = 0.0;  // 0: the case's
 };
@@ -48,7 +50,8 @@ bool wants(const std::vector<std::string>& families, const char* family) {
 int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   // Everything is checked before anything runs, so bad input writes nothing.
   for (const std::string& f : o.families)
-    if (f != "fracture" && f != "stress") return fail_input("--family: must be fracture or stress, got '" + f + "'");
+    if (f != "fracture" && f != "stress" && f != "colliders")
+      return fail_input("--family: must be fracture, stress or colliders, got '" + f + "'");
   for (const std::string& name : o.fracturers) {
     auto f = registries.fracturers.create(name);
     if (!f) return fail_input("--fracturer: " + f.error().message);
@@ -68,6 +71,8 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
       if (auto f = registries.fracturers.create(name, {{"resolution", r}}); !f)
         return fail_input("--resolution: " + f.error().message);
   }
+  for (const int b : o.vertex_budgets)
+    if (b != 0 && (b < 4 || b > 256)) return fail_input(fmt::format("--vertex-budget: must be 0 or 4 to 256, got {}", b));
   for (const int n : o.slabs)
     if (n < 2 || n % 2 != 0 || n > 4096) return fail_input(fmt::format("--slabs: must be even, 2 to 4096, got {}", n));
   std::vector<Case> cases;
@@ -94,6 +99,11 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   so.solver_slabs = largest_slabs >= 32 ? 32 : largest_slabs;
   so.repetitions = 10 * o.repetitions;  // a stress evaluation takes well under a millisecond: time it more often
 
+  ColliderAccuracyOptions co;
+  co.budgets = o.vertex_budgets;
+  co.fragments = o.fragments;
+  co.repetitions = o.repetitions;
+
   std::vector<AccuracyPoint> points;
   std::vector<std::string> names;
   for (const Case& c : cases) {
@@ -108,15 +118,25 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
       if (!p) return fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
+    // The colliders of the case's own pre-fracture pieces at each budget.
+    if (wants(o.families, "colliders") && !c.prefracture.explicit_planes()) {
+      Result<Solid> solid = build_case_solid(c);
+      if (!solid) return fail_input(solid.error().message);
+      Result<std::vector<AccuracyPoint>> p =
+          collider_accuracy(c.name, *solid, c.prefracture.fracturer, co, registries);
+      if (!p) return fail_input(p.error().message);
+      points.insert(points.end(), p->begin(), p->end());
+    }
     if (wants(o.families, "stress")) {
       Result<std::vector<AccuracyPoint>> p = stress_accuracy(c, so, registries);
       if (!p) return fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
   }
-  // Fracture rows first, then stress, each in run order.
+  // Fracture rows first, then stress, then colliders, each in run order.
+  const auto rank = [](const std::string& family) { return family == "fracture" ? 0 : family == "stress" ? 1 : 2; };
   std::stable_sort(points.begin(), points.end(),
-                   [](const AccuracyPoint& a, const AccuracyPoint& b) { return a.family < b.family; });
+                   [&](const AccuracyPoint& a, const AccuracyPoint& b) { return rank(a.family) < rank(b.family); });
   mark_pareto_front(points);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
@@ -154,7 +174,10 @@ void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& regis
                   "Timed runs per fracture point (stress points: 10 x); the median is reported")
       ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
-  cmd->add_option("--family", o->families, "Families to run: fracture, stress (default both)");
+  cmd->add_option("--family", o->families, "Families to run: fracture, stress, colliders (default all three)");
+  cmd->add_option("--vertex-budget", o->vertex_budgets,
+                  "Collider vertex budgets of the colliders family (0 = every point, the exact path)")
+      ->capture_default_str();
   cmd->add_option("--fracturer", o->fracturers, "Fracturers (default: every registered one but the exact reference, cgal-clip)");
   cmd->add_option("--model", o->models, "Stress models (default: every registered one)");
   cmd->add_option("--fragments", o->fragments, "Requested fragment counts")

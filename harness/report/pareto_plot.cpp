@@ -90,8 +90,9 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
                         floored ? fmt::format(" (error 0 drawn at {:.0e})", floor) : std::string());
   script += "set logscale xy\nset format y \"%.0e\"\nset grid\nset key outside right top\n";
   script += "set xlabel \"time (ms, median of the repetitions)\"\n";
-  script += family == "fracture" ? "set ylabel \"replay error (relative volume mismatch)\"\n"
-                                 : "set ylabel \"error (relative, against the reference)\"\n";
+  script += family == "fracture"    ? "set ylabel \"replay error (relative volume mismatch)\"\n"
+            : family == "colliders" ? "set ylabel \"largest share of a piece's hull volume cut off\"\n"
+                                    : "set ylabel \"error (relative, against the reference)\"\n";
   script += "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n";
   script += "set linetype 1 lc rgb \"#4e79a7\" pt 7\nset linetype 2 lc rgb \"#e15759\" pt 5\n"
             "set linetype 3 lc rgb \"#59a14f\" pt 9\nset linetype 4 lc rgb \"#b07aa1\" pt 11\n"

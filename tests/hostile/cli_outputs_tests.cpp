@@ -76,7 +76,7 @@ TEST_CASE("cli outputs: targets that are not regular files or that two outputs s
   CHECK(names_in(dir) == std::set<std::string>{"fifo", "grid.json", "grid.csv"});
 }
 
-TEST_CASE("cli outputs: a folder of the user's is never replaced by report or fracture; their own is",
+TEST_CASE("cli outputs: a folder of the user's is never replaced by report or fracture, their own is",
           "[hostile][outputs][cli]") {
   const fs::path dir = hostile_scratch("cli_folders");
   const fs::path grid = dir / "grid.json";
@@ -104,11 +104,13 @@ TEST_CASE("cli outputs: a folder of the user's is never replaced by report or fr
   const CliRun two = run_cli_argv({"fracture", "--mesh", mesh.string(), "--fragments", "2", "--out", "frag"}, dir);
   REQUIRE(two.exit_code == 0);
   const auto count = nlohmann::json::parse(two.out)["fragments"].get<std::size_t>();
-  CHECK(names_in(dir / "frag").size() == count + 1);  // the new fragments and the marker: no old fragment stays
+  // The new fragments, the glTF file of all of them and the marker: no old fragment stays.
+  CHECK(names_in(dir / "frag").size() == count + 2);
+  CHECK(fs::exists(dir / "frag" / "fragments.glb"));
   CHECK(partials_in(dir) == 0);
 }
 
-TEST_CASE("cli outputs: kill -9 during fracture --out leaves the old folder; the next run leaves nothing partial",
+TEST_CASE("cli outputs: kill -9 during fracture --out leaves the old folder, the next run leaves nothing partial",
           "[hostile][outputs][cli][kill]") {
   const fs::path dir = hostile_scratch("cli_kill");
   const fs::path mesh = dir / "cube.off";

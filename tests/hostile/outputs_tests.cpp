@@ -136,7 +136,7 @@ TEST_CASE("outputs: two outputs that resolve to one file are refused", "[hostile
   CHECK(check_outputs({{"--json", dir / "a.json"}, {"--junit", dir / "b.xml"}}).ok());
 }
 
-TEST_CASE("outputs: kill -9 during a file write leaves the old file; the next write removes the temporary",
+TEST_CASE("outputs: kill -9 during a file write leaves the old file, the next write removes the temporary",
           "[hostile][outputs][kill]") {
   const fs::path dir = hostile_scratch("kill_file");
   const fs::path target = dir / "grid.json";
@@ -161,7 +161,7 @@ TEST_CASE("outputs: kill -9 during a file write leaves the old file; the next wr
   }
 }
 
-TEST_CASE("outputs: kill -9 during a folder write leaves the old folder; the next write removes the staging",
+TEST_CASE("outputs: kill -9 during a folder write leaves the old folder, the next write removes the staging",
           "[hostile][outputs][kill]") {
   const fs::path dir = hostile_scratch("kill_folder");
   const fs::path out = dir / "fragments";

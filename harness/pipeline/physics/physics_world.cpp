@@ -1,4 +1,5 @@
 #include "harness/pipeline/physics/physics_world.h"
+#include "harness/pipeline/physics/collider_points.h"
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
@@ -83,6 +84,12 @@ Status validate_physics_settings(const PhysicsSettings& s) {
   if (!std::isfinite(s.ground_z)) return Error{"physics.ground_z: must be finite"};
   if (s.max_hull_vertices < 0) return Error{"physics.max_hull_vertices: must be >= 0 (0 = no cap)"};
   if (s.hull_optimize_above < 0) return Error{"physics.hull_optimize_above: must be >= 0"};
+  if (s.hull_vertex_budget != 0 && s.hull_vertex_budget < 4)
+    return Error{"physics.hull_vertex_budget: must be 0 (none) or >= 4, got " + std::to_string(s.hull_vertex_budget)};
+  if (s.contact_pool_size < 1)
+    return Error{"physics.contact_pool_size: must be >= 1, got " + std::to_string(s.contact_pool_size)};
+  if (s.hull_vertex_budget != 0 && s.hull_vertex_budget < 4)
+    return Error{"physics.hull_vertex_budget: must be 0 (none) or >= 4, got " + std::to_string(s.hull_vertex_budget)};
   if (!std::isfinite(s.collision_margin) || s.collision_margin < 0.0)
     return Error{"physics.collision_margin: must be finite and >= 0 m"};
   if (!std::isfinite(s.friction) || s.friction < 0.0) return Error{"physics.friction: must be >= 0"};
@@ -100,10 +107,18 @@ struct Body {
   bool in_world = true;                                      ///< added to the dynamics world
 };
 
+/// Bullet's pools of contact manifolds and collision algorithms, sized by `s.contact_pool_size`.
+btDefaultCollisionConstructionInfo pool_info(const PhysicsSettings& s) {
+  btDefaultCollisionConstructionInfo info;
+  info.m_defaultMaxPersistentManifoldPoolSize = s.contact_pool_size;
+  info.m_defaultMaxCollisionAlgorithmPoolSize = s.contact_pool_size;
+  return info;
+}
+
 struct PhysicsWorld::Impl {
   PhysicsSettings settings;
   // Declaration order = construction order; members are destroyed in reverse (world first).
-  btDefaultCollisionConfiguration configuration;
+  btDefaultCollisionConfiguration configuration{pool_info(settings)};
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
@@ -142,13 +157,19 @@ struct PhysicsWorld::Impl {
   /// (least squares, minimum norm: exact for a corner of three planes, on an edge or in a face it
   /// moves along the shared normals only). Each move is capped at half the vertex's distance from the
   /// centroid, so a needle corner cannot be pushed through the fragment.
-  std::vector<Vec3> inset_points(const Fragment& fragment) const {
+  std::vector<Vec3> inset_points(const Fragment& fragment, std::span<const std::int32_t> chosen) const {
     const Mesh& mesh = fragment.mesh;
     const double margin = settings.collision_margin;
     std::vector<Vec3> points = mesh.vertices;
     if (margin <= 0.0) return points;
+    // Only the chosen vertices move (and need their face normals); the rest are dropped by the caller.
+    std::vector<std::uint8_t> wanted(points.size(), chosen.empty() ? 1 : 0);
+    for (const std::int32_t v : chosen) wanted[static_cast<std::size_t>(v)] = 1;
     std::vector<std::vector<Vec3>> normals(points.size());
     for (const Triangle& t : mesh.triangles) {
+      if (!wanted[static_cast<std::size_t>(t[0])] && !wanted[static_cast<std::size_t>(t[1])] &&
+          !wanted[static_cast<std::size_t>(t[2])])
+        continue;
       const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
       Vec3 n = (mesh.vertices[static_cast<std::size_t>(t[1])] - a).cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a);
       const double len = n.norm();
@@ -162,7 +183,7 @@ struct PhysicsWorld::Impl {
     }
     for (std::size_t i = 0; i < points.size(); ++i) {
       const auto& list = normals[i];
-      if (list.empty()) continue;
+      if (!wanted[i] || list.empty()) continue;
       // Normal equations (sum n n^T) d = -margin sum n, solved by the pseudo-inverse (minimum norm).
       Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
       Vec3 rhs = Vec3::Zero();
@@ -193,7 +214,16 @@ struct PhysicsWorld::Impl {
   /// the body's principal frame (`centroid`, `axes`).
   std::unique_ptr<btCollisionShape> make_hull(const Fragment& fragment, const Vec3& centroid,
                                               const Eigen::Matrix3d& axes) const {
-    const std::vector<Vec3> points = inset_points(fragment);
+    std::vector<std::int32_t> chosen;
+    if (settings.hull_vertex_budget > 0)
+      chosen = collider_point_indices(fragment.mesh.vertices, settings.hull_vertex_budget);
+    std::vector<Vec3> points = inset_points(fragment, chosen);
+    if (!chosen.empty()) {
+      std::vector<Vec3> kept;
+      kept.reserve(chosen.size());
+      for (const std::int32_t v : chosen) kept.push_back(points[static_cast<std::size_t>(v)]);
+      points = std::move(kept);
+    }
     auto hull = std::make_unique<btConvexHullShape>();
     for (const Vec3& p : points) hull->addPoint(to_bt(axes.transpose() * (p - centroid)), false);
     hull->recalcLocalAabb();
@@ -358,6 +388,10 @@ bool PhysicsWorld::contains(int body) const {
 }
 
 int PhysicsWorld::body_count() const { return impl_->live; }
+
+int PhysicsWorld::overlapping_pairs() const {
+  return impl_->broadphase.getOverlappingPairCache()->getNumOverlappingPairs();
+}
 
 long PhysicsWorld::step_count() const { return impl_->steps; }
 

@@ -36,6 +36,10 @@ struct PhysicsSettings {
   /// vertices; a trigger, not an exact cap); 0 = never reduce. Mass properties always come from the
   /// full mesh, only the collider is reduced.
   int max_hull_vertices = 0;
+  /// At most this many points per collider (collider_points.h: the piece's points extreme along a
+  /// fixed spread of directions, so the collider lies inside the piece); 0 = every hull point. Mass
+  /// properties always come from the full mesh. 0 or >= 4.
+  int hull_vertex_budget = 0;
   /// A fragment with more vertices than this gets its convex hull computed (interior points dropped);
   /// below, every vertex is kept as a hull point (same shape, Bullet's support mapping ignores interior
   /// points; computing the hull would cost more than it saves). >= 0.
@@ -48,10 +52,16 @@ struct PhysicsSettings {
   double friction = 0.5;                 ///< Coulomb friction coefficient of every body and the ground
   double restitution = 0.0;              ///< coefficient of restitution of every body and the ground
   bool allow_sleeping = true;            ///< let Bullet deactivate bodies at rest (faster, still exact)
+  /// Contact manifolds (and as many collision algorithms) Bullet allocates when the world is made;
+  /// a pair beyond them is allocated (and zeroed) in the step that finds it. One per overlapping pair
+  /// of bounding boxes, so a scene's peak of pairs sized here moves that cost from the event's step
+  /// into the world's creation. Changes no result. >= 1 (Bullet's default 4096).
+  int contact_pool_size = 4096;
 };
 
-/// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, hull_optimize_above >= 0, collision_margin >= 0,
-/// friction >= 0, restitution in [0, 1]. The error names the field ("physics.fixed_step: ...").
+/// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, hull_optimize_above >= 0,
+/// hull_vertex_budget 0 or >= 4, collision_margin >= 0, friction >= 0, restitution in [0, 1],
+/// contact_pool_size >= 1. The error names the field ("physics.fixed_step: ...").
 Status validate_physics_settings(const PhysicsSettings& s);
 
 /// A Bullet dynamics world with fragment bodies addressed by integer ids (never reused).
@@ -109,6 +119,9 @@ class PhysicsWorld {
   [[nodiscard]] bool contains(int body) const;
   /// Number of bodies in the world (prepared ones and the ground plane are not counted).
   [[nodiscard]] int body_count() const;
+  /// Pairs of bodies whose bounding boxes overlap (Bullet's broadphase pairs, each with a contact
+  /// manifold: PhysicsSettings::contact_pool_size), as of the last step.
+  [[nodiscard]] int overlapping_pairs() const;
   /// Number of step() calls so far.
   [[nodiscard]] long step_count() const;
   /// The settings the world was made with.

@@ -1,9 +1,11 @@
 #include "harness/pipeline/setup/run_setup.h"
 
 #include "algorithms/core/mesh.h"
+#include "algorithms/fracture/local_fracture.h"
 #include "harness/pipeline/setup/offline_structure.h"
 #include "harness/pipeline/structure_response.h"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
@@ -61,6 +63,19 @@ Status settle(RunState& run) {
   return {};
 }
 
+/// Contact manifolds for the world to allocate up front (PhysicsSettings::contact_pool_size): Bullet
+/// keeps one per overlapping pair of bounding boxes, and the pairs peak when an event's pieces enter
+/// the world. Fresh pieces of a slab-like solid overlap many neighbours' boxes (the tower's 412 bodies
+/// at 100 x 25 made 24,500 pairs), so 64 per body expected at the peak: every fragment, plus the
+/// runtime pieces of each fragment an impact reaches. Between Bullet's default and 65,536 (70 MB).
+int contact_pool_size(const RunState& run) {
+  const std::vector<Fragment>& fragments = run.result.fragments;
+  long bodies = static_cast<long>(fragments.size());
+  for (const ImpactEvent& e : run.spec.impacts)
+    bodies += static_cast<long>(fragments_near_impact(fragments, e.impact).size()) * std::max(run.runtime_fragments, 1);
+  return static_cast<int>(std::clamp(64 * bodies, 4096L, 65536L));
+}
+
 /// The physics world: a ground at the solid's lowest point, every standing fragment a static body,
 /// every fragment loose from the start a dynamic body, every falling cluster one compound.
 void build_world(RunState& run) {
@@ -78,6 +93,8 @@ void build_world(RunState& run) {
   // A collider needs the outline, not every vertex: hulls of more than 64 points are reduced (about 42
   // support points) so that a piece of a scanned mesh costs Bullet what a piece of a box does.
   settings.max_hull_vertices = 64;
+  settings.hull_vertex_budget = run.spec.colliders.vertex_budget;
+  settings.contact_pool_size = contact_pool_size(run);
   run.world = std::make_unique<PhysicsWorld>(settings);
   const double density = run.spec.material.density;
   run.static_body.assign(r.fragments.size(), -1);

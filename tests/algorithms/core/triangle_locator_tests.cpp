@@ -63,7 +63,7 @@ TEST_CASE("triangle locator: the nearest triangle is as near as the brute-force 
   }
 }
 
-TEST_CASE("triangle locator: only the included triangles are found; none gives no hit", "[locator]") {
+TEST_CASE("triangle locator: only the included triangles are found, none gives no hit", "[locator]") {
   const Mesh box = make_box(Vec3(1, 1, 1));
   std::vector<std::uint8_t> include(box.triangles.size(), 0);
   include[4] = 1;

@@ -132,7 +132,7 @@ TEST_CASE("fem-lite: primitives and a real mesh fracture closed, conserving volu
   }
 }
 
-TEST_CASE("fem-lite: the same input gives the same planes and fragments; the planes replay", "[fem-lite]") {
+TEST_CASE("fem-lite: the same input gives the same planes and fragments, the planes replay", "[fem-lite]") {
   const Mesh sphere = make_sphere(1.0, 24, 12);
   const FractureParams params = downward_hit(Vec3(0, 0, 1), 12, 0.3);
   const FemLiteFracturer fem;

@@ -370,3 +370,15 @@ TEST_CASE("cases: a prism whose outline crosses itself is refused", "[cases]") {
   REQUIRE_FALSE(solid.ok());
   CHECK_THAT(solid.error().message, Catch::Contains("prism"));
 }
+
+TEST_CASE("cases: colliders.vertex_budget is read, 0 by default, and checked", "[cases][colliders]") {
+  const Result<Case> plain = parse("{" + box_mesh + "}");
+  REQUIRE(plain.ok());
+  CHECK(plain->colliders.vertex_budget == 0);
+  const Result<Case> budget = parse("{" + box_mesh + R"(, "colliders": {"vertex_budget": 24}})");
+  REQUIRE(budget.ok());
+  CHECK(budget->colliders.vertex_budget == 24);
+  require_error("{" + box_mesh + R"(, "colliders": {"vertex_budget": 3}})", {"colliders.vertex_budget", ">= 4"});
+  require_error("{" + box_mesh + R"(, "colliders": {"vertex_budget": 257}})", {"colliders.vertex_budget", "<= 256"});
+  require_error("{" + box_mesh + R"(, "colliders": {"budget": 8}})", {"colliders.budget"});
+}

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <string>
 
 namespace {
@@ -110,4 +111,40 @@ TEST_CASE("cli: accuracy refuses bad input with exit 2, one line, and writes not
     CHECK(r.out.empty());
     CHECK_FALSE(std::filesystem::exists(json));
   }
+}
+
+TEST_CASE("cli: accuracy colliders family measures the volume a vertex budget cuts off", "[cli][accuracy][colliders]") {
+  const auto json = scratch("colliders") / "a.json";
+  const auto r = run_cli("accuracy --case elephant --family colliders --fragments 5 --vertex-budget 0 8 32 "
+                         "--repetitions 1 --json " + json.string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("## colliders") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(json));
+  REQUIRE(j.at("points").size() == 3);
+  std::map<int, double> loss;
+  for (const auto& p : j.at("points")) {
+    INFO(p.dump());
+    REQUIRE(p.at("family") == "colliders");
+    const int budget = p.at("knobs").at("vertex_budget").get<int>();
+    loss[budget] = p.at("error").get<double>();
+    CHECK(p.at("figures").at("pieces").get<int>() >= 5);
+    if (budget > 0) CHECK(p.at("figures").at("mean_points").get<double>() <= budget);
+    CHECK(p.at("time_ms").get<double>() > 0.0);
+  }
+  CHECK(loss.at(0) == 0.0);  // every point: the hull itself
+  // The elephant's pieces have hundreds of points: 8 of them cut off much, 32 less, never all.
+  CHECK(loss.at(8) > loss.at(32));
+  CHECK(loss.at(32) > 0.0);
+  CHECK(loss.at(8) < 1.0);
+}
+
+TEST_CASE("cli: accuracy refuses a vertex budget below 4 and an unknown family", "[cli][accuracy][colliders]") {
+  const auto budget = run_cli("accuracy --case wall --family colliders --vertex-budget 3");
+  CHECK(budget.exit_code == 2);
+  CHECK(budget.err.find("--vertex-budget") != std::string::npos);
+  CHECK(budget.out.empty());
+  const auto family = run_cli("accuracy --case wall --family hulls");
+  CHECK(family.exit_code == 2);
+  CHECK(family.err.find("fracture, stress or colliders") != std::string::npos);
 }

@@ -115,7 +115,7 @@ TEST_CASE("compare: a 20 % slowdown with 10 repetitions is a regression, on eith
   }
 }
 
-TEST_CASE("compare: noise around the same median passes; an improvement passes and is reported", "[compare]") {
+TEST_CASE("compare: noise around the same median passes, an improvement passes and is reported", "[compare]") {
   const StoredGrid a = stored(synthetic(10, 1.0, 0.15, 1), context(), "a.json");
   const StoredGrid b = stored(synthetic(10, 1.0, 0.15, 7), context(), "b.json");
   CHECK_FALSE(compare_grids(a, b, {}).failed());
@@ -194,7 +194,7 @@ TEST_CASE("compare: instruction counts regress on the threshold alone", "[compar
   CHECK(compare_grids(stored(synthetic(3, 1, 0, 1), context(), "t"), stored(base, context(), "b"), o).failed());
 }
 
-TEST_CASE("merge: shards join into the unsharded grid; mismatched shards are refused", "[compare]") {
+TEST_CASE("merge: shards join into the unsharded grid, mismatched shards are refused", "[compare]") {
   const GridResult whole = synthetic(3, 1.0, 0.05, 1);
   GridResult s0 = whole, s1 = whole;
   s0.cells = {whole.cells[0]};

@@ -202,7 +202,7 @@ TEST_CASE("grid results: compare refuses a failed cell, and gbench marks it as a
   CHECK(errors == 1);
 }
 
-TEST_CASE("grid results: shards with failed cells merge; shards of different time limits do not", "[grid][timeout]") {
+TEST_CASE("grid results: shards with failed cells merge, shards of different time limits do not", "[grid][timeout]") {
   const GridResult whole = grid_with_failed_cell("timeout after 0.5 s");
   GridResult s0 = whole, s1 = whole;
   s0.cells = {whole.cells[0]};

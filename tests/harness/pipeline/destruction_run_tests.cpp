@@ -213,7 +213,7 @@ TEST_CASE("pipeline: an impact that reaches nothing fractures nothing and says s
   REQUIRE(r.frame_ms.size() == 12);
 }
 
-TEST_CASE("pipeline: one frame runs the event in it; the case's needs switch stages off", "[pipeline]") {
+TEST_CASE("pipeline: one frame runs the event in it, the case's needs switch stages off", "[pipeline]") {
   PreparedCase p = prepared("building");
   RunOptions o;
   o.prefracture_fragments = 20;

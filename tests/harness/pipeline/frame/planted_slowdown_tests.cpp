@@ -14,7 +14,7 @@ using namespace shatter;
 
 }  // namespace
 
-TEST_CASE("planted slowdown: off in this build; a frame's physics step moves a falling body by one step",
+TEST_CASE("planted slowdown: off in this build, a frame's physics step moves a falling body by one step",
           "[pipeline][frame]") {
   REQUIRE(planted_slowdown_share() == 0.0);
   PhysicsSettings settings;

@@ -7,6 +7,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <vector>
 
@@ -198,4 +200,58 @@ TEST_CASE("physics-world: fragments that share a face start touching, not pushed
     CHECK((world.position(id) - start).norm() < 0.005);
     CHECK(world.linear_velocity(id).norm() < 0.05);
   }
+}
+
+namespace {
+
+/// A block of n x n x n cubes of side 0.2 m, each touching its neighbours, on the ground: the boxes of
+/// every cube and its 26 neighbours overlap, ((3n - 2)^3 - n^3) / 2 pairs (5068 for n = 8).
+std::vector<Fragment> cube_block(int n) {
+  std::vector<Fragment> cubes;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < n; ++k) cubes.push_back(box_fragment(Vec3(0.2, 0.2, 0.2), Vec3(0.2 * i, 0.2 * j, 0.1 + 0.2 * k)));
+  return cubes;
+}
+
+}  // namespace
+
+TEST_CASE("physics-world: the contact pool's size changes no trajectory", "[physics]") {
+  const std::vector<Fragment> cubes = cube_block(8);
+  std::vector<std::vector<Vec3>> paths(2);
+  std::vector<int> pairs(2);
+  for (int run = 0; run < 2; ++run) {
+    PhysicsSettings s;
+    s.ground = true;
+    s.contact_pool_size = run == 0 ? 4096 : 8192;  // the first allocates the pairs beyond 4096 in the step
+    PhysicsWorld world(s);
+    std::vector<int> ids;
+    for (const Fragment& f : cubes) ids.push_back(world.add_fragment(f, 1000.0));
+    // Knock the block's top corner so that the pile moves.
+    world.apply_impulse(ids.back(), Vec3(-40.0, -25.0, 10.0), cubes.back().mass.centroid + Vec3(0.1, 0.1, 0.1));
+    for (int step = 0; step < 30; ++step) {
+      world.step();
+      for (const int id : ids) paths[static_cast<std::size_t>(run)].push_back(world.position(id));
+    }
+    pairs[static_cast<std::size_t>(run)] = world.overlapping_pairs();
+  }
+  CHECK(pairs[0] > 4096);  // the default pool overflowed
+  CHECK(pairs[0] == pairs[1]);
+  REQUIRE(paths[0].size() == 30u * 512u);
+  CHECK(paths[0] == paths[1]);
+  // The pile moved: the comparison is not of bodies at rest.
+  CHECK((paths[0].back() - cubes.back().mass.centroid).norm() > 1e-3);
+}
+
+TEST_CASE("physics-world: settings out of range are refused with the field's name", "[physics]") {
+  PhysicsSettings s;
+  s.contact_pool_size = 0;
+  const auto pool = PhysicsWorld::create(s);
+  REQUIRE_FALSE(pool);
+  CHECK(pool.error().message.find("physics.contact_pool_size") != std::string::npos);
+  s = PhysicsSettings{};
+  s.hull_vertex_budget = 3;
+  const auto budget = PhysicsWorld::create(s);
+  REQUIRE_FALSE(budget);
+  CHECK(budget.error().message.find("physics.hull_vertex_budget") != std::string::npos);
 }

@@ -10,7 +10,7 @@ using namespace shatter;
 
 }  // namespace
 
-TEST_CASE("latency: frames within the period count 1/60 s each, exactly; a long frame counts its time",
+TEST_CASE("latency: frames within the period count 1/60 s each, exactly, a long frame counts its time",
           "[pipeline][schedule]") {
   const std::vector<double> frame_ms = {3.0, 16.0, 2.5, 25.0, 1.0};
   REQUIRE(paced_ms(frame_ms, 0, 2) == 50.0);
@@ -18,7 +18,7 @@ TEST_CASE("latency: frames within the period count 1/60 s each, exactly; a long 
   REQUIRE(paced_ms(frame_ms, 4, 4) == Approx(1000.0 / 60.0));
 }
 
-TEST_CASE("latency: trigger to visible, both counted; an event that fractured nothing has none",
+TEST_CASE("latency: trigger to visible, both counted, an event that fractured nothing has none",
           "[pipeline][schedule]") {
   const std::vector<double> frame_ms(10, 1.0);
   RuntimeEvent e;

@@ -84,7 +84,7 @@ TEST_CASE("offline setup: the case structure is the run's structure at the case'
   REQUIRE(clocks.wall[static_cast<std::size_t>(Stage::prefracture)] > 0.0);
 }
 
-TEST_CASE("offline setup: bonds only on request; an anchor region that touches nothing is an error",
+TEST_CASE("offline setup: bonds only on request, an anchor region that touches nothing is an error",
           "[pipeline][setup]") {
   Fixture f = fixture("cantilever");
   OfflineSetupRequest request = request_for(f);

@@ -1,0 +1,70 @@
+#include "harness/pipeline/physics/collider_points.h"
+
+#include <array>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+
+namespace shatter {
+namespace {
+
+/// The 26 directions of a cube's faces, corners and edges (unnormalised: only argmax is needed).
+constexpr std::array<std::array<double, 3>, 26> kCubeDirections{{
+    {1, 0, 0},  {-1, 0, 0}, {0, 1, 0},   {0, -1, 0},  {0, 0, 1},   {0, 0, -1},  {1, 1, 1},
+    {-1, -1, -1}, {1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {-1, 1, -1}, {-1, 1, 1}, {1, -1, -1},
+    {1, 1, 0},  {-1, -1, 0}, {1, -1, 0},  {-1, 1, 0},  {1, 0, 1},   {-1, 0, -1}, {1, 0, -1},
+    {-1, 0, 1}, {0, 1, 1},   {0, -1, -1}, {0, 1, -1},  {0, -1, 1},
+}};
+
+/// Point k of a spherical Fibonacci set of n points.
+Vec3 fibonacci_direction(int k, int n) {
+  const double z = 1.0 - (2.0 * k + 1.0) / n;
+  const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+  const double phi = 2.0 * std::numbers::pi * k / std::numbers::phi;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+
+}  // namespace
+
+std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, int budget) {
+  std::vector<std::int32_t> out;
+  if (static_cast<int>(points.size()) <= budget) {
+    out.resize(points.size());
+    std::iota(out.begin(), out.end(), 0);
+    return out;
+  }
+  std::vector<char> taken(points.size(), 0);
+  out.reserve(static_cast<std::size_t>(budget));
+  const auto take_extreme = [&](const Vec3& d) {
+    std::size_t best = 0;
+    double best_dot = -std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const double s = d.dot(points[i]);
+      if (s > best_dot) {
+        best_dot = s;
+        best = i;
+      }
+    }
+    if (!taken[best]) {
+      taken[best] = 1;
+      out.push_back(static_cast<std::int32_t>(best));
+    }
+  };
+  for (const auto& d : kCubeDirections) {
+    if (static_cast<int>(out.size()) >= budget) return out;
+    take_extreme(Vec3(d[0], d[1], d[2]));
+  }
+  // More directions until the budget is filled (a few points may be extreme along none of them,
+  // which leaves the collider under its budget). The set's points are taken in a strided order (a
+  // step coprime with n near n / phi^2), so that every prefix is spread from pole to pole.
+  const int n = 8 * budget;
+  int step = std::max(1, static_cast<int>(n * 0.3819660112501051));
+  while (std::gcd(step, n) != 1) ++step;
+  for (int j = 0; j < n && static_cast<int>(out.size()) < budget; ++j)
+    take_extreme(fibonacci_direction(static_cast<int>((static_cast<long>(j) * step) % n), n));
+  return out;
+}
+
+}  // namespace shatter
