@@ -46,20 +46,35 @@ const PlanarFrame& planar_frame(const Vec3& normal) {
 /// Appends the corner values of a planar face with normal `normal` at positions `p`: the cut-face
 /// dressing of the file comment of attribute_transfer.h (normal, planar UVs, tangent).
 void append_planar_corners(MeshAttributes& attr, const Vec3& normal, const std::array<Vec3, 3>& p, double scale) {
-  const AttributeLayout& layout = attr.layout;
-  const PlanarFrame& frame = planar_frame(normal);
-  const Vec3& n = frame.n;
-  const std::array<Vec3, 2>& e = frame.e;
-  const double handedness = frame.handedness;
-  for (const Vec3& q : p) {
-    if (layout.normals) attr.corners.insert(attr.corners.end(), {n.x(), n.y(), n.z()});
-    for (int set = 0; set < layout.uv_sets; ++set)
-      attr.corners.insert(attr.corners.end(), {q.dot(e[0]) / scale, q.dot(e[1]) / scale});
-    if (layout.tangents) attr.corners.insert(attr.corners.end(), {e[0].x(), e[0].y(), e[0].z(), handedness});
-  }
+  const std::size_t n = static_cast<std::size_t>(attr.layout.stride());
+  attr.corners.resize(attr.corners.size() + 3 * n);
+  write_planar_corners(attr.layout, normal, p, scale, attr.corners.data() + attr.corners.size() - 3 * n);
 }
 
 }  // namespace
+
+void write_planar_corners(const AttributeLayout& layout, const Vec3& normal, const std::array<Vec3, 3>& p, double scale,
+                          double* out) {
+  const PlanarFrame& frame = planar_frame(normal);
+  const Vec3& n = frame.n;
+  const std::array<Vec3, 2>& e = frame.e;
+  for (const Vec3& q : p) {
+    if (layout.normals) out = std::copy_n(n.data(), 3, out);
+    for (int set = 0; set < layout.uv_sets; ++set) {
+      *out++ = q.dot(e[0]) / scale;
+      *out++ = q.dot(e[1]) / scale;
+    }
+    if (layout.tangents) {
+      out = std::copy_n(e[0].data(), 3, out);
+      *out++ = frame.handedness;
+    }
+  }
+}
+
+void write_cut_corners(const MeshAttributes& attr, const Vec3& outward_normal, const std::array<Vec3, 3>& p,
+                       double* out) {
+  write_planar_corners(attr.layout, outward_normal, p, attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0, out);
+}
 
 void copy_attribute_frame(const Mesh& src, Mesh& dst) {
   dst.attributes.layout = src.attributes.layout;
@@ -276,10 +291,17 @@ Status check_attributes(const Mesh& mesh, const std::string& who) {
     if (attr.materials[f] < 0 || attr.materials[f] >= slots)
       return Error{who + ": triangle " + std::to_string(f) + " has material " + std::to_string(attr.materials[f]) +
                    " of " + std::to_string(slots) + " slots"};
-  // One branch-free pass (it vectorises; NaN fails the comparison), then the first offender on failure.
-  bool finite = true;
-  for (const double v : attr.corners) finite &= std::abs(v) <= std::numeric_limits<double>::max();
-  if (finite) return {};
+  // One branch-free pass, then the first offender only on failure: v - v is 0 for a finite v and NaN
+  // for an infinite or NaN one, summed in 8 independent lanes (no reassociation needed, so the
+  // compiler vectorises them).
+  const double* c = attr.corners.data();
+  const std::size_t count = attr.corners.size();
+  std::array<double, 8> lanes{};
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8)
+    for (std::size_t k = 0; k < 8; ++k) lanes[k] += c[i + k] - c[i + k];
+  for (; i < count; ++i) lanes[0] += c[i] - c[i];
+  if (std::all_of(lanes.begin(), lanes.end(), [](double lane) { return lane == 0.0; })) return {};
   const std::size_t n = stride_of(attr);
   for (std::size_t i = 0; i < attr.corners.size(); ++i)
     if (!std::isfinite(attr.corners[i]))

@@ -1,5 +1,6 @@
 #include "algorithms/core/corner_provenance.h"
 
+#include <algorithm>
 #include <numeric>
 #include <utility>
 
@@ -52,25 +53,47 @@ std::int32_t CornerProvenance::cap(const Vec3& outward_normal) {
 
 Mesh CornerProvenance::resolve(Mesh&& piece) const {
   Mesh out;
-  out.vertices = std::move(piece.vertices);
   copy_attribute_frame(solid_, out);
   const std::size_t faces = piece.triangles.size();
-  out.triangles.reserve(faces);
-  out.tags.reserve(faces);
-  if (!solid_.attributes.materials.empty()) out.attributes.materials.reserve(faces);
-  out.attributes.corners.reserve(3 * faces * static_cast<std::size_t>(solid_.attributes.layout.stride()));
+  const auto stride = static_cast<std::size_t>(solid_.attributes.layout.stride());
+  const bool materials = !solid_.attributes.materials.empty();
+  // Every face's values appended in order (reserved once; not zeroed first), the geometry the piece's
+  // own, moved.
+  MeshAttributes& attr = out.attributes;
+  std::vector<double>& corners = attr.corners;
+  corners.reserve(3 * faces * stride);
+  if (materials) attr.materials.resize(faces);
   for (std::size_t f = 0; f < faces; ++f) {
-    const Triangle& t = piece.triangles[f];
     const std::int32_t record = piece.attributes.materials[f];
-    if (is_cap(record)) {
-      add_cut_triangle(out, t[0], t[1], t[2], cap_normals_[static_cast<std::size_t>(-record - 1)]);
-    } else if (record < solid_faces_) {
-      add_triangle_from(out, solid_, static_cast<std::size_t>(record), t[0], t[1], t[2]);
-    } else {
-      const Cut& cut = cuts_[static_cast<std::size_t>(record - solid_faces_)];
-      add_triangle_weighted(out, solid_, static_cast<std::size_t>(cut.face), t[0], t[1], t[2], cut.weights);
+    if (record >= 0 && record < solid_faces_) {
+      const auto source = static_cast<std::size_t>(record);
+      const double* values = solid_.attributes.corner(source, 0);
+      corners.insert(corners.end(), values, values + 3 * stride);
+      if (materials) attr.materials[f] = solid_.attributes.materials[source];
+      continue;
     }
+    corners.resize(corners.size() + 3 * stride);
+    double* values = corners.data() + corners.size() - 3 * stride;
+    if (is_cap(record)) {
+      const Triangle& t = piece.triangles[f];
+      write_cut_corners(attr, cap_normals_[static_cast<std::size_t>(-record - 1)],
+                        {piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
+                         piece.vertices[static_cast<std::size_t>(t[2])]},
+                        values);
+      if (materials) attr.materials[f] = attr.cut.material;
+      continue;
+    }
+    const Cut& cut = cuts_[static_cast<std::size_t>(record - solid_faces_)];
+    const auto source = static_cast<std::size_t>(cut.face);
+    for (std::size_t k = 0; k < 3; ++k) {
+      const CornerWeights& w = cut.weights[k];
+      interpolate_corners(solid_.attributes, source, Vec3(w[0], w[1], w[2]), values + k * stride);
+    }
+    if (materials) attr.materials[f] = solid_.attributes.materials[source];
   }
+  out.vertices = std::move(piece.vertices);
+  out.triangles = std::move(piece.triangles);
+  out.tags = std::move(piece.tags);
   return out;
 }
 
