@@ -88,8 +88,6 @@ Status validate_physics_settings(const PhysicsSettings& s) {
     return Error{"physics.hull_vertex_budget: must be 0 (none) or >= 4, got " + std::to_string(s.hull_vertex_budget)};
   if (s.contact_pool_size < 1)
     return Error{"physics.contact_pool_size: must be >= 1, got " + std::to_string(s.contact_pool_size)};
-  if (s.hull_vertex_budget != 0 && s.hull_vertex_budget < 4)
-    return Error{"physics.hull_vertex_budget: must be 0 (none) or >= 4, got " + std::to_string(s.hull_vertex_budget)};
   if (!std::isfinite(s.collision_margin) || s.collision_margin < 0.0)
     return Error{"physics.collision_margin: must be finite and >= 0 m"};
   if (!std::isfinite(s.friction) || s.friction < 0.0) return Error{"physics.friction: must be >= 0"};
