@@ -2,6 +2,7 @@
 
 #include "harness/cli/command.h"
 #include "harness/cli/numeric_flags.h"
+#include "harness/results/run_context.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -29,6 +30,17 @@ int run_cli(int argc, char** argv, const Registries& registries) {
   add_report_command(app, exit_code);
   add_stability_command(app, exit_code, registries);
   check_numeric_flags(app);  // every numeric flag read strictly: no nan, inf, wrap or saturation
+  if (argc == 2 && std::string(argv[1]) == "--version") {
+    // Version, the commit built and the context fingerprint that results carry (docs/results.md).
+    const RunContext c = current_context();
+    std::printf("shatterbench %s\ncommit %s\nbuild %s, %s, %s; CGAL %s, Eigen %s, Bullet %s\nfingerprint %s\n",
+                shatterbench_version().c_str(), c.commit.empty() ? "unknown" : c.commit.c_str(), c.build_type.c_str(),
+                c.compiler.c_str(), c.flags.c_str(), c.cgal_version.c_str(), c.eigen_version.c_str(),
+                c.bullet_version.c_str(), c.fingerprint.c_str());
+    if (std::fflush(stdout) != 0 || std::ferror(stdout))
+      return fail_input(std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
+    return exit_ok;
+  }
   if (argc > 1 && argv[1][0] != '-') {
     // CLI11 would only say that a subcommand is required: name the word and the commands instead.
     std::string known;

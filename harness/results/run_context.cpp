@@ -20,7 +20,8 @@
 #endif
 
 #if !defined(SHATTER_GIT_COMMIT) || !defined(SHATTER_BUILD_TYPE) || !defined(SHATTER_CXX_COMPILER) || \
-    !defined(SHATTER_CXX_FLAGS) || !defined(SHATTER_CGAL_VERSION) || !defined(SHATTER_EIGEN_VERSION)
+    !defined(SHATTER_CXX_FLAGS) || !defined(SHATTER_CGAL_VERSION) || !defined(SHATTER_EIGEN_VERSION) || \
+    !defined(SHATTER_VERSION)
 #error "run_context.cpp needs the SHATTER_* build definitions of the harness target (CMakeLists.txt)"
 #endif
 
@@ -84,6 +85,8 @@ std::string context_fingerprint(const RunContext& c) {
   add(std::to_string(c.cores));
   return fmt::format("{:016x}", hash);
 }
+
+std::string shatterbench_version() { return SHATTER_VERSION; }
 
 RunContext current_context() {
   RunContext c;

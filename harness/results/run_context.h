@@ -36,6 +36,9 @@ struct RunContext {
 /// The context of this process: build values compiled in, machine values read now, fingerprint set.
 RunContext current_context();
 
+/// The project's version (CMake's project version, e.g. "0.1.0").
+std::string shatterbench_version();
+
 /// The fingerprint of `c`: 16 hex digits from the fields that make timings comparable.
 std::string context_fingerprint(const RunContext& c);
 

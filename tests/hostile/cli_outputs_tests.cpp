@@ -160,7 +160,8 @@ TEST_CASE("cli outputs: concurrent merges to one output leave a JSON and CSV of 
 TEST_CASE("cli outputs: standard output that cannot be written is exit 2", "[hostile][outputs][cli]") {
   const fs::path dir = hostile_scratch("cli_stdout");
   const std::string err = (dir / "err").string();
-  for (const std::string& command : {std::string("list"), std::string("stress --case cantilever --json")}) {
+  for (const std::string& command :
+       {std::string("list"), std::string("--version"), std::string("stress --case cantilever --json")}) {
     const std::string line = std::string(SHATTER_CLI) + " " + command + " >/dev/full 2>" + err;
     const int status = std::system(line.c_str());
     INFO(command << ": " << file_bytes(err));
