@@ -1,6 +1,5 @@
 #include "algorithms/core/corner_provenance.h"
 
-#include <algorithm>
 #include <numeric>
 #include <utility>
 
