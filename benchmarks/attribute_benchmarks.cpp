@@ -6,6 +6,8 @@
 //   build/bin/shatter_benchmarks --benchmark_filter='^attributes/' --benchmark_repetitions=5
 // Rows: attributes/<mesh>/<fracturer>/{geometry,attributes}/<n>. Compare the medians of a pair. The
 // meshes: elephant.off and homer.off whole, and brick-piece, a runtime-sized fragment of a brick.
+// attributes/<mesh>/output-floor copies the dressed mesh's corner values once: the least any
+// fracture writing its fragments' attributes pays.
 
 #include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/primitives.h"
@@ -75,6 +77,19 @@ void fracture_pair(benchmark::State& state, const Registries& registries, const 
   state.counters["material_errors"] = a.material_errors;
 }
 
+/// The least a fracture that writes its fragments' attributes pays on `mesh`: its corner values
+/// copied once into a new array (every fragment face's values are written once; a fracture adds cut
+/// faces to that). Compared with a geometry row it bounds the attributes' cost ratio from below.
+void output_floor(benchmark::State& state, const Mesh& mesh) {
+  const std::vector<double>& values = mesh.attributes.corners;
+  for (auto _ : state) {
+    std::vector<double> copy(values.begin(), values.end());
+    benchmark::DoNotOptimize(copy.data());
+    benchmark::ClobberMemory();
+  }
+  state.counters["bytes"] = static_cast<double>(values.size() * sizeof(double));
+}
+
 /// Fragment 0 of a dressed 0.4 x 0.2 x 0.1 m brick pre-fractured by plane-slice into 40.
 Result<Mesh> brick_piece(const Registries& registries) {
   Solid brick;
@@ -121,6 +136,10 @@ void register_attribute_benchmarks(const Registries& registries) {
   }
   const Registries* reg = &registries;
   for (const Pair& pair : pairs) {
+    const Mesh* dressed_mesh = &pair.attributes;
+    benchmark::RegisterBenchmark(("attributes/" + pair.name + "/output-floor").c_str(),
+                                 [dressed_mesh](benchmark::State& st) { output_floor(st, *dressed_mesh); })
+        ->Unit(benchmark::kMillisecond);
     for (const std::string& algo : registries.fracturers.names()) {
       for (const int n : {5, 25}) {
         for (const bool attributed : {false, true}) {

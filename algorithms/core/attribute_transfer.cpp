@@ -268,7 +268,7 @@ void transfer_attributes(const Mesh& from, Mesh& to) {
   }
 }
 
-Status check_attributes(const Mesh& mesh, const std::string& who) {
+Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValues values) {
   const MeshAttributes& attr = mesh.attributes;
   if (attr.empty()) return {};
   const AttributeLayout& layout = attr.layout;
@@ -290,22 +290,23 @@ Status check_attributes(const Mesh& mesh, const std::string& who) {
     if (attr.materials[f] < 0 || attr.materials[f] >= slots)
       return Error{who + ": triangle " + std::to_string(f) + " has material " + std::to_string(attr.materials[f]) +
                    " of " + std::to_string(slots) + " slots"};
-  // One branch-free pass, then the first offender only on failure: v - v is 0 for a finite v and NaN
-  // for an infinite or NaN one, summed in 8 independent lanes (no reassociation needed, so the
-  // compiler vectorises them).
-  const double* c = attr.corners.data();
-  const std::size_t count = attr.corners.size();
-  std::array<double, 8> lanes{};
-  std::size_t i = 0;
-  for (; i + 8 <= count; i += 8)
-    for (std::size_t k = 0; k < 8; ++k) lanes[k] += c[i + k] - c[i + k];
-  for (; i < count; ++i) lanes[0] += c[i] - c[i];
-  if (std::all_of(lanes.begin(), lanes.end(), [](double lane) { return lane == 0.0; })) return {};
+  if (values == AttributeValues::at_use || all_finite(attr.corners.data(), attr.corners.size())) return {};
   const std::size_t n = stride_of(attr);
   for (std::size_t i = 0; i < attr.corners.size(); ++i)
     if (!std::isfinite(attr.corners[i]))
       return Error{who + ": triangle " + std::to_string(i / (3 * n)) + " has a corner attribute that is not finite"};
   return {};
+}
+
+bool all_finite(const double* values, std::size_t count) {
+  // v - v is 0 for a finite v and NaN for an infinite or NaN one, summed in 8 independent lanes (no
+  // reassociation needed, so the compiler vectorises them); the first offender is sought only on failure.
+  std::array<double, 8> lanes{};
+  std::size_t i = 0;
+  for (; i + 8 <= count; i += 8)
+    for (std::size_t k = 0; k < 8; ++k) lanes[k] += values[i + k] - values[i + k];
+  for (; i < count; ++i) lanes[0] += values[i] - values[i];
+  return std::all_of(lanes.begin(), lanes.end(), [](double lane) { return lane == 0.0; });
 }
 
 }  // namespace shatter

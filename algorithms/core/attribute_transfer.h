@@ -111,9 +111,19 @@ void interpolate_corners(const MeshAttributes& attributes, std::size_t f, const 
 /// `from` has no attributes.
 void transfer_attributes(const Mesh& from, Mesh& to);
 
-/// Checks the invariants of mesh_attributes.h, that every value is finite, at most kMaxUvSets UV sets,
-/// tangents only with normals, and a prepared cut-face style (interior slot in range, scale > 0) on
-/// an attributed mesh. The error names `who` and the first offending triangle.
-Status check_attributes(const Mesh& mesh, const std::string& who);
+/// Which of an attributed mesh's corner values check_attributes reads.
+enum class AttributeValues {
+  checked,  ///< every value must be finite (one pass over them)
+  at_use,   ///< not read here: the caller checks each value where it reads it (CornerProvenance::resolve)
+};
+
+/// Checks the invariants of mesh_attributes.h, that every value is finite (unless `values` is
+/// at_use), at most kMaxUvSets UV sets, tangents only with normals, and a prepared cut-face style
+/// (interior slot in range, scale > 0) on an attributed mesh. The error names `who` and the first
+/// offending triangle.
+Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValues values = AttributeValues::checked);
+
+/// True when each of the `count` values at `values` is finite (one branch-free pass).
+[[nodiscard]] bool all_finite(const double* values, std::size_t count);
 
 }  // namespace shatter

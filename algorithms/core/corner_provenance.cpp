@@ -1,12 +1,13 @@
 #include "algorithms/core/corner_provenance.h"
 
+#include <algorithm>
 #include <numeric>
 #include <utility>
 
 namespace shatter {
 
-CornerProvenance::CornerProvenance(const Mesh& solid)
-    : solid_(solid), solid_faces_(static_cast<std::int32_t>(solid.triangles.size())) {}
+CornerProvenance::CornerProvenance(const Mesh& solid, std::string who)
+    : solid_(solid), who_(std::move(who)), solid_faces_(static_cast<std::int32_t>(solid.triangles.size())) {}
 
 Mesh CornerProvenance::tracked() const {
   Mesh piece;
@@ -50,45 +51,72 @@ std::int32_t CornerProvenance::cap(const Vec3& outward_normal) {
   return -static_cast<std::int32_t>(cap_normals_.size());
 }
 
-Mesh CornerProvenance::resolve(Mesh&& piece) const {
+Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
   Mesh out;
   copy_attribute_frame(solid_, out);
   const std::size_t faces = piece.triangles.size();
   const auto stride = static_cast<std::size_t>(solid_.attributes.layout.stride());
+  const std::size_t face_values = 3 * stride;
   const bool materials = !solid_.attributes.materials.empty();
-  // Every face's values appended in order (reserved once; not zeroed first), the geometry the piece's
-  // own, moved.
+  const std::vector<std::int32_t>& records = piece.attributes.materials;
+  // Every face's values appended in order to one array reserved once (a run of whole faces in one
+  // copy, not zeroed first), the geometry the piece's own, moved.
   MeshAttributes& attr = out.attributes;
   std::vector<double>& corners = attr.corners;
-  corners.reserve(3 * faces * stride);
+  corners.reserve(faces * face_values);
   if (materials) attr.materials.resize(faces);
-  for (std::size_t f = 0; f < faces; ++f) {
-    const std::int32_t record = piece.attributes.materials[f];
+  const double* solid_values = solid_.attributes.corners.data();
+  std::size_t f = 0;
+  while (f < faces) {
+    const std::int32_t record = records[f];
     if (record >= 0 && record < solid_faces_) {
+      // A run of whole solid faces in the solid's order (slicing keeps the order of the faces it passes
+      // on): one copy for the run.
+      std::size_t run = 1;
+      while (f + run < faces && records[f + run] == record + static_cast<std::int32_t>(run) &&
+             record + static_cast<std::int32_t>(run) < solid_faces_)
+        ++run;
       const auto source = static_cast<std::size_t>(record);
-      const double* values = solid_.attributes.corner(source, 0);
-      corners.insert(corners.end(), values, values + 3 * stride);
-      if (materials) attr.materials[f] = solid_.attributes.materials[source];
+      const double* from = solid_values + source * face_values;
+      corners.insert(corners.end(), from, from + run * face_values);
+      if (materials)
+        std::copy_n(solid_.attributes.materials.begin() + static_cast<std::ptrdiff_t>(source), run,
+                    attr.materials.begin() + static_cast<std::ptrdiff_t>(f));
+      f += run;
       continue;
     }
-    corners.resize(corners.size() + 3 * stride);
-    double* values = corners.data() + corners.size() - 3 * stride;
+    corners.resize(corners.size() + face_values);
+    double* face = corners.data() + corners.size() - face_values;
     if (is_cap(record)) {
       const Triangle& t = piece.triangles[f];
       write_cut_corners(attr, cap_normals_[static_cast<std::size_t>(-record - 1)],
                         {piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
                          piece.vertices[static_cast<std::size_t>(t[2])]},
-                        values);
+                        face);
       if (materials) attr.materials[f] = attr.cut.material;
+      ++f;
       continue;
     }
     const Cut& cut = cuts_[static_cast<std::size_t>(record - solid_faces_)];
     const auto source = static_cast<std::size_t>(cut.face);
+    // The weighted sum of interpolate_corners, inline: the same operations in the same order.
+    const double* a = solid_values + source * face_values;
+    const double* b = a + stride;
+    const double* c = b + stride;
     for (std::size_t k = 0; k < 3; ++k) {
       const CornerWeights& w = cut.weights[k];
-      interpolate_corners(solid_.attributes, source, Vec3(w[0], w[1], w[2]), values + k * stride);
+      double* corner = face + k * stride;
+      for (std::size_t i = 0; i < stride; ++i) corner[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
     }
     if (materials) attr.materials[f] = solid_.attributes.materials[source];
+    ++f;
+  }
+  // One pass over the piece's values while they are still in cache (a piece is a part of the solid).
+  if (!all_finite(corners.data(), corners.size())) {
+    // The offending solid triangle, found only now; a weighted sum can overflow only when the solid's
+    // values reach the largest doubles.
+    if (Status s = check_attributes(solid_, who_); !s) return s.error();
+    return Error{who_ + ": an interpolated corner attribute overflows (the input's values are too large)"};
   }
   out.vertices = std::move(piece.vertices);
   out.triangles = std::move(piece.triangles);

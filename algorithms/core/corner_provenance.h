@@ -19,9 +19,11 @@
 
 #include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/mesh.h"
+#include "algorithms/core/result.h"
 
 #include <array>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace shatter {
@@ -30,7 +32,7 @@ namespace shatter {
 class CornerProvenance {
  public:
   /// Tracks `solid`, which carries attributes and must outlive this object.
-  explicit CornerProvenance(const Mesh& solid);
+  explicit CornerProvenance(const Mesh& solid, std::string who = "fracture");
 
   /// The solid's geometry and tags as a tracked piece (each face its own record).
   [[nodiscard]] Mesh tracked() const;
@@ -43,8 +45,11 @@ class CornerProvenance {
   /// length): one call per side of a cut, shared by all its cap faces.
   std::int32_t cap(const Vec3& outward_normal);
 
-  /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated.
-  [[nodiscard]] Mesh resolve(Mesh&& piece) const;
+  /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated. Each value
+  /// is checked as it is written (the solid's values are read here, so a fracture that tracks them
+  /// need not check them first: check_attributes' AttributeValues::at_use); an Error names the first
+  /// solid triangle with a value that is not finite.
+  [[nodiscard]] Result<Mesh> resolve(Mesh&& piece) const;
 
   /// True when `record` names a cap.
   [[nodiscard]] static bool is_cap(std::int32_t record) { return record < 0; }
@@ -57,6 +62,7 @@ class CornerProvenance {
   [[nodiscard]] Cut cut_of(std::int32_t record) const;
 
   const Mesh& solid_;
+  std::string who_;  // names the fracture in resolve's error
   std::int32_t solid_faces_;
   std::vector<Cut> cuts_;          // record solid_faces_ + i
   std::vector<Vec3> cap_normals_;  // record -(i + 1)

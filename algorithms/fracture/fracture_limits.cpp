@@ -9,8 +9,9 @@
 
 namespace shatter {
 
-Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts) {
-  if (Status s = check_attributes(solid, std::string(algorithm)); !s) return s;
+Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts,
+                            AttributeValues values) {
+  if (Status s = check_attributes(solid, std::string(algorithm), values); !s) return s;
   return check_solid(solid, algorithm, verdicts);
 }
 

@@ -3,6 +3,7 @@
 /// of a fracturer calls one of them before any geometry is computed, so an input an algorithm cannot
 /// represent is an Error, never a crash (docs/limits.md, docs/stability.md).
 
+#include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/fracturer.h"
@@ -19,8 +20,10 @@ inline constexpr int kMaxFragments = 100000;
 /// mesh must have been readied by prepare_cut_faces) and the acceptance rule (check_solid,
 /// solid_check.h), which includes the representable coordinate range; `algorithm` names the fracturer
 /// in the message.
-/// `verdicts` remembers meshes that passed (FractureParams::verdicts).
-Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts);
+/// `verdicts` remembers meshes that passed (FractureParams::verdicts). With `values` at_use the corner
+/// values are left to the fracturer, which checks each where it reads it.
+Status check_fracture_solid(const Mesh& solid, std::string_view algorithm, SelfIntersectionVerdicts* verdicts,
+                            AttributeValues values = AttributeValues::checked);
 
 /// 1 <= fragments <= `max_fragments` and an impact (if any) with a point in the coordinate range, a
 /// finite direction and impulse and a radius in [0, kMaxCoordinate]: the request, not the solid.

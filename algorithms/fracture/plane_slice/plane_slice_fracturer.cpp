@@ -62,25 +62,36 @@ std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid, const CornerProv
   return pieces;
 }
 
-std::vector<Fragment> to_fragments(std::vector<SliceKernel::Piece>&& pieces, const CornerProvenance* provenance) {
+Result<std::vector<Fragment>> to_fragments(std::vector<SliceKernel::Piece>&& pieces,
+                                           const CornerProvenance* provenance) {
   std::vector<Fragment> out;
   out.reserve(pieces.size());
-  for (SliceKernel::Piece& p : pieces)
-    out.push_back({provenance != nullptr ? provenance->resolve(std::move(p.mesh)) : std::move(p.mesh), p.mass});
+  for (SliceKernel::Piece& p : pieces) {
+    if (provenance == nullptr) {
+      out.push_back({std::move(p.mesh), p.mass});
+      continue;
+    }
+    Result<Mesh> resolved = provenance->resolve(std::move(p.mesh));
+    if (!resolved) return resolved.error();
+    out.push_back({std::move(*resolved), p.mass});
+  }
   return out;
 }
 
 /// The provenance records of one fracture of `solid`, when it carries attributes.
 std::optional<CornerProvenance> provenance_for(const Mesh& solid) {
   if (!has_attributes(solid)) return std::nullopt;
-  return std::optional<CornerProvenance>(std::in_place, solid);
+  return std::optional<CornerProvenance>(std::in_place, solid, "plane-slice");
 }
 
 }  // namespace
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
                                                             const FractureParams& params) const {
-  if (Status s = check_fracture_params(solid, params, "plane-slice"); !s) return s.error();
+  // The corner values are checked where the fragments read them (CornerProvenance::resolve).
+  if (Status s = check_fracture_request(params, "plane-slice"); !s) return s.error();
+  if (Status s = check_fracture_solid(solid, "plane-slice", params.verdicts, AttributeValues::at_use); !s)
+    return s.error();
   std::optional<CornerProvenance> provenance = provenance_for(solid);
   CornerProvenance* tracking = provenance ? &*provenance : nullptr;
   const SliceKernel kernel(tracking);
@@ -91,7 +102,8 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
                                                                       int max_fragments,
                                                                       SelfIntersectionVerdicts* verdicts) const {
-  if (Status s = check_fracture_solid(solid, "plane-slice", verdicts); !s) return s.error();
+  if (Status s = check_fracture_solid(solid, "plane-slice", verdicts, AttributeValues::at_use); !s)
+    return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
   std::optional<CornerProvenance> provenance = provenance_for(solid);
   CornerProvenance* tracking = provenance ? &*provenance : nullptr;

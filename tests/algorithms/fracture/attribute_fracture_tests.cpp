@@ -13,6 +13,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -178,6 +179,33 @@ TEST_CASE("attributes: every fracturer carries affine UVs, normals and materials
         check_same_geometry(*fragments, *geometry);
         const int cut_faces = check_box_fragments(*fragments, box, uv);
         if (n > 1 && fragments->size() > 1) CHECK(cut_faces > 0);
+      }
+    }
+  }
+}
+
+TEST_CASE("attributes: every fracturer refuses a corner value that is not finite and names its triangle",
+          "[attributes][conformance]") {
+  const Mesh box = attributed_box(make_box(Vec3(2.0, 3.0, 1.5)), AffineUv{});
+  const Registries r = test::builtin_registries();
+  const std::size_t stride = static_cast<std::size_t>(box.attributes.layout.stride());
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    for (const std::size_t face : {std::size_t{0}, std::size_t{7}, box.triangles.size() - 1}) {
+      Mesh m = box;
+      // Corner 2's last value (a UV of set 1) of triangle `face`.
+      m.attributes.corners[(3 * face + 2) * stride + stride - 1] = bad;
+      for (const std::string& name : r.fracturers.names()) {
+        INFO(name << ", triangle " << face << ", value " << bad);
+        auto fracturer = r.fracturers.create(name);
+        REQUIRE(fracturer.ok());
+        FractureParams params;
+        params.fragments = 5;
+        params.seed = 3;
+        const Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(m, params);
+        REQUIRE_FALSE(fragments.ok());
+        CHECK_THAT(fragments.error().message,
+                   Catch::StartsWith(name + ": triangle " + std::to_string(face) + " ") &&
+                       Catch::Contains("not finite"));
       }
     }
   }

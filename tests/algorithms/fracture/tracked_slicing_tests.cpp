@@ -68,7 +68,7 @@ TEST_CASE("tracked slicing: every corner resolves to the affine UVs, face normal
   const int stride = sphere.attributes.layout.stride();
   int caps = 0;
   for (const Mesh& piece : tracked) {
-    const Mesh m = provenance.resolve(Mesh(piece));
+    const Mesh m = *provenance.resolve(Mesh(piece));
     REQUIRE(check_attributes(m, "fragment").ok());
     REQUIRE(m.triangles == piece.triangles);
     REQUIRE(m.vertices == piece.vertices);
@@ -98,7 +98,7 @@ TEST_CASE("tracked slicing: every corner resolves to the affine UVs, face normal
   CHECK(caps > 0);
   // A cap's normal is its plane's, unit length, to round-off.
   for (const Mesh& piece : tracked) {
-    const Mesh m = provenance.resolve(Mesh(piece));
+    const Mesh m = *provenance.resolve(Mesh(piece));
     for (std::size_t f = 0; f < m.triangles.size(); ++f) {
       if (m.tags[f] != FaceTag::cut) continue;
       const double* c = m.attributes.corner(f, 0);
@@ -119,7 +119,7 @@ TEST_CASE("tracked slicing: the same mesh as carrying the values through every c
   const std::vector<Mesh> carried = slice_all(sphere, planes, nullptr);
   REQUIRE(tracked.size() == carried.size());
   for (std::size_t i = 0; i < tracked.size(); ++i) {
-    const Mesh m = provenance.resolve(Mesh(tracked[i]));
+    const Mesh m = *provenance.resolve(Mesh(tracked[i]));
     const Mesh& want = carried[i];
     REQUIRE(m.vertices == want.vertices);
     REQUIRE(m.triangles == want.triangles);
@@ -141,7 +141,7 @@ TEST_CASE("tracked slicing: faces no plane crosses resolve bit for bit", "[attri
   // A plane that misses the sphere keeps it whole: every record is the face itself.
   const std::vector<Mesh> whole = slice_all(provenance.tracked(), {Plane{Vec3(0, 0, 5), Vec3::UnitZ()}}, &provenance);
   REQUIRE(whole.size() == 1);
-  const Mesh m = provenance.resolve(Mesh(whole[0]));
+  const Mesh m = *provenance.resolve(Mesh(whole[0]));
   CHECK(m.attributes == sphere.attributes);
   CHECK(m.triangles == sphere.triangles);
 }
