@@ -47,6 +47,18 @@ class Registry {
                  ")"};
   }
 
+  /// True when `name` is registered.
+  [[nodiscard]] bool contains(std::string_view name) const { return find(name) != nullptr; }
+
+  /// Moves every entry of `other` (none of whose names may be registered here) after this one's.
+  void absorb(Registry&& other) {
+    for (Entry& e : other.entries_) {
+      assert(!contains(e.name) && "plugin registered twice");
+      entries_.push_back(std::move(e));
+    }
+    other.entries_.clear();
+  }
+
   /// Registered names, in registration order.
   [[nodiscard]] std::vector<std::string> names() const {
     std::vector<std::string> out;

@@ -2,22 +2,108 @@
 
 #include "harness/cli/command.h"
 #include "harness/cli/numeric_flags.h"
+#include "harness/plugins/plugin_loader.h"
 #include "harness/results/run_context.h"
 
 #include <cerrno>
+#include <cstdlib>
 #include <cstdio>
 #include <cstring>
 #include <exception>
 #include <iostream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace shatter {
+namespace {
 
-int run_cli(int argc, char** argv, const Registries& registries) {
+/// argv without its `--plugin PATH` and `--plugin=PATH` options (before a "--"), and their paths.
+struct PluginArguments {
+  std::vector<char*> argv;
+  std::vector<std::string> paths;
+  std::string error;  ///< a --plugin without its path
+};
+
+PluginArguments take_plugin_arguments(int argc, char** argv) {
+  PluginArguments out;
+  bool options = true;
+  for (int i = 0; i < argc; ++i) {
+    const std::string_view arg = argv[i];
+    if (i == 0 || !options) {
+      out.argv.push_back(argv[i]);
+      continue;
+    }
+    if (arg == "--") options = false;
+    if (arg == "--plugin") {
+      if (i + 1 >= argc || std::string_view(argv[i + 1]).empty()) {
+        out.error = "--plugin needs the path of a plugin library";
+        return out;
+      }
+      out.paths.emplace_back(argv[++i]);
+      continue;
+    }
+    if (arg.starts_with("--plugin=")) {
+      if (arg.size() == 9) {
+        out.error = "--plugin needs the path of a plugin library";
+        return out;
+      }
+      out.paths.emplace_back(arg.substr(9));
+      continue;
+    }
+    out.argv.push_back(argv[i]);
+  }
+  out.argv.push_back(nullptr);
+  return out;
+}
+
+/// `registries` with the plugins of SHATTERBENCH_PLUGIN_PATH and of `flags` (in that order) added.
+/// The plugins loaded are left in SHATTERBENCH_PLUGIN_PATH, so a child this process runs (the
+/// callgrind re-run of `grid --metric instructions`) loads the same ones.
+Result<Registries> with_plugins(const Registries& registries, const std::vector<std::string>& flags) {
+  std::vector<std::string> paths;
+  const char* variable = std::getenv("SHATTERBENCH_PLUGIN_PATH");
+  if (variable != nullptr) {
+    Result<std::vector<std::string>> listed = plugin_path_files(variable);
+    if (!listed) return listed.error();
+    paths = *listed;
+  }
+  if (paths.empty() && flags.empty()) return registries;
+  std::string joined;
+  for (const std::string& flag : flags) {
+    if (flag.find(':') != std::string::npos)
+      return Error{"--plugin " + flag + ": a plugin path may not hold ':' (the separator of SHATTERBENCH_PLUGIN_PATH)"};
+    paths.push_back(flag);
+  }
+  Registries all = registries;
+  PluginOrigins origins;
+  if (Status s = load_plugins(paths, all, origins); !s) return s.error();
+  if (!flags.empty()) {
+    for (const std::string& path : paths) joined += (joined.empty() ? "" : ":") + path;
+    ::setenv("SHATTERBENCH_PLUGIN_PATH", joined.c_str(), 1);
+  }
+  return all;
+}
+
+}  // namespace
+
+int run_cli(int argc, char** argv, const Registries& builtin) {
   using namespace cli;
+  PluginArguments arguments = take_plugin_arguments(argc, argv);
+  if (!arguments.error.empty()) return fail_input(arguments.error);
+  argc = static_cast<int>(arguments.argv.size()) - 1;
+  argv = arguments.argv.data();
+  Result<Registries> loaded = with_plugins(builtin, arguments.paths);
+  if (!loaded) return fail_input(loaded.error().message);
+  const Registries& registries = *loaded;
   CLI::App app{"shatterbench: benchmark and regression harness for real-time destruction algorithms",
                "shatterbench"};
   app.require_subcommand(1);
+  // Read before parsing (take_plugin_arguments), declared here for --help.
+  std::vector<std::string> plugin_help;
+  app.add_option("--plugin", plugin_help,
+                 "Load a plugin library with more fracturers and stress models (repeatable; also the "
+                 "':'-separated SHATTERBENCH_PLUGIN_PATH); docs/plugins.md");
   int exit_code = exit_ok;
   add_list_command(app, exit_code, registries);
   add_fracture_command(app, exit_code, registries);

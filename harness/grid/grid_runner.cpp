@@ -15,6 +15,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <exception>
 
 namespace shatter {
 namespace {
@@ -209,7 +210,14 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
         done = before + o.repetitions;
         if (o.progress) o.progress(done, total);
       } else {
-        cell = run_grid_cell(prepared, o, registries, p, r, &verdicts, done, total);
+        // An exception out of a plugin's code fails its cell, as in a child; a crash needs --timeout.
+        const int before = done;
+        try {
+          cell = run_grid_cell(prepared, o, registries, p, r, &verdicts, done, total);
+        } catch (const std::exception& e) {
+          cell = failed_grid_cell(grid_cell_settings(c, o, p, r), std::string("threw: ") + e.what());
+          done = before + o.repetitions;
+        }
       }
       if (!cell) return cell.error();
       out.cells.push_back(std::move(*cell));

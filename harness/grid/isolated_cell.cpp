@@ -14,7 +14,11 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-GridCell failed_cell(const GridCell& settings, std::string reason) {
+GridCell failed_cell(const GridCell& settings, std::string reason) { return failed_grid_cell(settings, std::move(reason)); }
+
+}  // namespace
+
+GridCell failed_grid_cell(const GridCell& settings, std::string reason) {
   GridCell cell = settings;
   cell.samples.clear();
   cell.within_budget = false;
@@ -22,8 +26,6 @@ GridCell failed_cell(const GridCell& settings, std::string reason) {
   cell.failed = std::move(reason);
   return cell;
 }
-
-}  // namespace
 
 Result<GridCell> run_cell_isolated(const std::function<Result<GridCell>()>& run, const GridCell& settings,
                                    double timeout_s, double latency_budget_ms) {

@@ -16,6 +16,7 @@
 #include "harness/results/grid_record.h"
 
 #include <functional>
+#include <string>
 
 namespace shatter {
 
@@ -25,5 +26,8 @@ namespace shatter {
 /// returned, unchanged. `latency_budget_ms` judges the cell read back, as the child judged it.
 Result<GridCell> run_cell_isolated(const std::function<Result<GridCell>()>& run, const GridCell& settings,
                                    double timeout_s, double latency_budget_ms);
+
+/// `settings` (grid_cell_settings) as a failed cell: no samples, over both budgets, `failed` = `reason`.
+GridCell failed_grid_cell(const GridCell& settings, std::string reason);
 
 }  // namespace shatter

@@ -1,5 +1,7 @@
 #include "harness/pipeline/prefracture_cache.h"
 
+#include "harness/plugins/plugin_loader.h"
+
 #include "algorithms/core/attribute_transfer.h"
 #include "harness/limits.h"
 #include "harness/output/atomic_file.h"
@@ -55,7 +57,8 @@ class Fnv1a {
   std::uint64_t hash_ = 0xcbf29ce484222325ULL;
 };
 
-/// The commit plus the running executable's size and modification time: changes with every rebuild.
+/// The commit plus the running executable's size and modification time and the loaded plugins' (plugins
+/// are loaded before any fracture): changes with every rebuild of either.
 const std::string& code_identity() {
   static const std::string identity = [] {
     std::string id = SHATTER_GIT_COMMIT;
@@ -67,7 +70,7 @@ const std::string& code_identity() {
       const auto time = std::filesystem::last_write_time(exe, ec);
       if (!ec) id += fmt::format("/{}", time.time_since_epoch().count());
     }
-    return id;
+    return id + "/" + loaded_plugins_identity();
   }();
   return identity;
 }

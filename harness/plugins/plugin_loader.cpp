@@ -1,0 +1,137 @@
+#include "harness/plugins/plugin_loader.h"
+
+#include "algorithms/registry/plugin_api.h"
+
+#include <dlfcn.h>
+
+#include <algorithm>
+#include <exception>
+#include <filesystem>
+#include <string_view>
+
+namespace shatter {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Every plugin file loaded in this process (dlopen's libraries are the process's too).
+std::vector<std::string>& loaded_files() {
+  static std::vector<std::string> files;
+  return files;
+}
+
+/// "built-in" for names registered before any plugin.
+std::string origin_of(const PluginOrigins& origins, const std::string& name) {
+  const auto it = origins.find(name);
+  return it == origins.end() ? std::string("built-in") : it->second;
+}
+
+/// Error unless every name of `staged` is free in `host` and every description one line.
+template <class Plugin>
+Status check_entries(const Registry<Plugin>& staged, const Registry<Plugin>& host, const PluginOrigins& origins,
+                     const std::string& path) {
+  for (const std::string& name : staged.names()) {
+    const std::string kind(plugin_kind<Plugin>);
+    if (host.contains(name))
+      return Error{"plugin " + path + ": " + kind + " '" + name + "' is already registered by " +
+                   origin_of(origins, name)};
+    if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
+      return Error{"plugin " + path + ": " + kind + " name '" + name + "' is empty or holds white space"};
+    if (staged.description(name).find('\n') != std::string::npos)
+      return Error{"plugin " + path + ": the description of " + kind + " '" + name + "' is more than one line"};
+  }
+  return {};
+}
+
+Status load_plugin(const std::string& path, Registries& registries, PluginOrigins& origins) {
+  // RTLD_NOW: an unresolved symbol is an error here, not a crash in the middle of a run. Relative
+  // paths are made explicit so that dlopen never searches the library path for them.
+  const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* why = dlerror();
+    return Error{"plugin " + path + ": cannot load: " + std::string(why != nullptr ? why : "unknown error")};
+  }
+  using Entry = const ShatterbenchPluginV1* (*)();
+  void* symbol = dlsym(handle, SHATTERBENCH_PLUGIN_ENTRY);
+  if (symbol == nullptr)
+    return Error{"plugin " + path + ": no " SHATTERBENCH_PLUGIN_ENTRY " entry point (not a shatterbench plugin)"};
+  const ShatterbenchPluginV1* d = reinterpret_cast<Entry>(symbol)();
+  if (d == nullptr || d->register_plugins == nullptr)
+    return Error{"plugin " + path + ": its " SHATTERBENCH_PLUGIN_ENTRY " gives no registration function"};
+  const std::string version = d->version != nullptr ? std::string(d->version) : std::string("unknown");
+  if (d->abi != SHATTERBENCH_PLUGIN_ABI || version != SHATTERBENCH_VERSION)
+    return Error{"plugin " + path + ": built against shatterbench " + version + " (plugin ABI " +
+                 std::to_string(d->abi) + "), this is shatterbench " SHATTERBENCH_VERSION " (plugin ABI " +
+                 std::to_string(SHATTERBENCH_PLUGIN_ABI) + "): rebuild it against this version"};
+  if (d->cxx_abi != __GXX_ABI_VERSION)
+    return Error{"plugin " + path + ": built with C++ ABI " + std::to_string(d->cxx_abi) + ", this is " +
+                 std::to_string(__GXX_ABI_VERSION)};
+  Registries staged;
+  try {
+    d->register_plugins(staged);
+  } catch (const std::exception& e) {
+    return Error{"plugin " + path + ": registration threw: " + e.what()};
+  } catch (...) {
+    return Error{"plugin " + path + ": registration threw a non-standard exception"};
+  }
+  if (Status s = check_entries(staged.fracturers, registries.fracturers, origins, path); !s) return s;
+  if (Status s = check_entries(staged.stress_models, registries.stress_models, origins, path); !s) return s;
+  loaded_files().push_back(path);
+  for (const std::string& name : staged.fracturers.names()) origins[name] = path;
+  for (const std::string& name : staged.stress_models.names()) origins[name] = path;
+  registries.fracturers.absorb(std::move(staged.fracturers));
+  registries.stress_models.absorb(std::move(staged.stress_models));
+  return {};
+}
+
+}  // namespace
+
+Result<std::vector<std::string>> plugin_path_files(const std::string& variable) {
+  std::vector<std::string> files;
+  std::size_t start = 0;
+  while (start <= variable.size()) {
+    std::size_t end = variable.find(':', start);
+    if (end == std::string::npos) end = variable.size();
+    const std::string entry = variable.substr(start, end - start);
+    start = end + 1;
+    if (entry.empty()) continue;
+    std::error_code ec;
+    const fs::file_status status = fs::status(entry, ec);
+    if (ec || !fs::exists(status)) return Error{"SHATTERBENCH_PLUGIN_PATH: " + entry + " does not exist"};
+    if (!fs::is_directory(status)) {
+      files.push_back(entry);
+      continue;
+    }
+    std::vector<std::string> in_folder;
+    for (const fs::directory_entry& e : fs::directory_iterator(entry, ec))
+      if (e.path().extension() == ".so" && e.is_regular_file(ec)) in_folder.push_back(e.path().string());
+    if (ec) return Error{"SHATTERBENCH_PLUGIN_PATH: cannot read " + entry + ": " + ec.message()};
+    std::sort(in_folder.begin(), in_folder.end());
+    files.insert(files.end(), in_folder.begin(), in_folder.end());
+  }
+  return files;
+}
+
+std::string loaded_plugins_identity() {
+  std::string id;
+  for (const std::string& path : loaded_files()) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(path, ec);
+    id += (ec ? path : absolute.string());
+    const auto size = fs::file_size(path, ec);
+    if (!ec) id += "/" + std::to_string(size);
+    const auto time = fs::last_write_time(path, ec);
+    if (!ec) id += "/" + std::to_string(time.time_since_epoch().count());
+    id += ";";
+  }
+  return id;
+}
+
+Status load_plugins(const std::vector<std::string>& paths, Registries& registries, PluginOrigins& origins) {
+  for (const std::string& path : paths)
+    if (Status s = load_plugin(path, registries, origins); !s) return s;
+  return {};
+}
+
+}  // namespace shatter
