@@ -23,7 +23,10 @@ std::vector<fs::path> candidate_dirs() {
   if (const char* env = std::getenv("SHATTER_CASE_DIR"); env != nullptr && *env != '\0') dirs.emplace_back(env);
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec && !exe.empty()) dirs.push_back((exe.parent_path() / ".." / ".." / "cases").lexically_normal());
+  if (!ec && !exe.empty()) {
+    dirs.push_back((exe.parent_path() / ".." / ".." / "cases").lexically_normal());                  // build/bin
+    dirs.push_back((exe.parent_path() / ".." / "share" / "shatterbench" / "cases").lexically_normal());  // installed
+  }
 #ifdef SHATTER_SOURCE_DIR
   dirs.push_back(fs::path(SHATTER_SOURCE_DIR) / "cases");
 #endif
