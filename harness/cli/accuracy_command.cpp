@@ -9,6 +9,7 @@
 #include "harness/cases/case_library.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cli/command.h"
+#include "harness/cli/progress_line.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
 #include "harness/results/run_context.h"
@@ -106,10 +107,17 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
 
   std::vector<AccuracyPoint> points;
   std::vector<std::string> names;
+  int steps = 0;
+  for (const Case& c : cases)
+    steps += (wants(o.families, "fracture") && !c.prefracture.explicit_planes() ? 1 : 0) +
+             (wants(o.families, "colliders") && !c.prefracture.explicit_planes() ? 1 : 0) +
+             (wants(o.families, "stress") ? 1 : 0);
+  ProgressLine progress("accuracy", steps);
   for (const Case& c : cases) {
     names.push_back(c.name);
     // Explicit planes make a fixed structure (the analytic beams): only its stress is measured.
     if (wants(o.families, "fracture") && !c.prefracture.explicit_planes()) {
+      progress.step(c.name + ", fracture");
       Result<Solid> solid = build_case_solid(c);
       if (!solid) return fail_input(solid.error().message);
       std::optional<Impact> impact;
@@ -120,6 +128,7 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
     }
     // The colliders of the case's own pre-fracture pieces at each budget.
     if (wants(o.families, "colliders") && !c.prefracture.explicit_planes()) {
+      progress.step(c.name + ", colliders");
       Result<Solid> solid = build_case_solid(c);
       if (!solid) return fail_input(solid.error().message);
       Result<std::vector<AccuracyPoint>> p =
@@ -128,11 +137,13 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
       points.insert(points.end(), p->begin(), p->end());
     }
     if (wants(o.families, "stress")) {
+      progress.step(c.name + ", stress");
       Result<std::vector<AccuracyPoint>> p = stress_accuracy(c, so, registries);
       if (!p) return fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
   }
+  progress.end();
   // Fracture rows first, then stress, then colliders, each in run order.
   const auto rank = [](const std::string& family) { return family == "fracture" ? 0 : family == "stress" ? 1 : 2; };
   std::stable_sort(points.begin(), points.end(),

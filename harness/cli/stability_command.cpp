@@ -1,5 +1,6 @@
 #include "algorithms/registry/registries.h"
 #include "harness/cli/command.h"
+#include "harness/cli/progress_line.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
 #include "harness/results/run_context.h"
@@ -57,9 +58,16 @@ int run_stability_command(const StabilityCommandOptions& o, const Registries& re
   options.quick = o.quick;
   options.time_limit_s = o.timeout_s;
   options.hazards = o.hazards;
-  const std::vector<HazardResult> results = run_stability(options, registries, [](const HazardResult& r) {
-    std::cerr << "stability: " << r.hazard << " / " << r.algorithm << ": " << outcome_tag(r.outcome) << '\n';
+  // On a terminal one line rewritten per result; elsewhere (a log, CI) one line per result.
+  ProgressLine progress("stability", 0);
+  const std::vector<HazardResult> results = run_stability(options, registries, [&progress](const HazardResult& r) {
+    const std::string what = r.hazard + " / " + r.algorithm + ": " + std::string(outcome_tag(r.outcome));
+    if (progress.shown())
+      progress.step(what);
+    else
+      std::cerr << "stability: " << what << '\n';
   });
+  progress.end();
   std::cout << stability_table(results);
   if (!o.json.empty()) {
     nlohmann::ordered_json doc = {{"context", to_json(current_context())}};
