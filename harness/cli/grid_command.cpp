@@ -51,6 +51,8 @@ struct GridCommandOptions {
   std::string cache_dir;
   bool no_cache = false;
   std::string format = "shatter";
+  std::string gbench;
+  bool gbench_aggregates_only = false;
   std::string junit;
   std::string shard;
   std::string metric = "time";
@@ -240,6 +242,7 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   }
   const std::vector<OutputTarget> outputs = {{"--json", json_path, false, o.update_baseline},
                                              {"--json (its CSV twin)", csv_path, false, o.update_baseline},
+                                             {"--gbench", o.gbench, false, false},
                                              {"--junit", o.junit, false, false}};
   if (Status s = check_outputs(outputs, baseline_folders(o.baseline_dir)); !s) return fail_input(s.error().message);
 
@@ -291,6 +294,12 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
     if (Status s = write_files_atomically(set); !s) return fail_input("--json: " + s.error().message);
     if (o.update_baseline) std::fprintf(stderr, "shatterbench: baseline %s updated\n", json_path.string().c_str());
   }
+  report.context = current_context();
+  if (!o.gbench.empty()) {
+    const std::string format = o.gbench_aggregates_only ? "gbench-aggregates" : "gbench";
+    if (Status s = write_file_atomically(o.gbench, make_grid_reporter(format)->render(report)); !s)
+      return fail_input("--gbench: " + s.error().message);
+  }
   if (!o.junit.empty())
     if (Status s = write_file_atomically(o.junit, make_grid_reporter("junit")->render(report)); !s)
       return fail_input("--junit: " + s.error().message);
@@ -331,6 +340,10 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
   cmd->add_option("--frames", o->frames, "Frames per run (default: the case's frames)");
   cmd->add_option("--json", o->json, "Write the results JSON here (and the CSV beside it, .csv)");
   cmd->add_option("--format", o->format, "Format of the --json file: shatter (default) or gbench (Google Benchmark's)");
+  cmd->add_option("--gbench", o->gbench,
+                  "Also write Google Benchmark's JSON here (for its tools/compare.py; docs/results.md), beside --json");
+  cmd->add_flag("--gbench-aggregates-only", o->gbench_aggregates_only,
+                "In --gbench, only the mean, median, stddev and cv of the repetitions");
   cmd->add_option("--junit", o->junit, "Write JUnit XML here: one test case per cell (the budget gate)");
   cmd->add_option("--prefracture", o->prefracture, "Pre-fracture counts, e.g. 10,50,100 (default: the case's grid)")
       ->delimiter(',');

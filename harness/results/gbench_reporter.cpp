@@ -5,85 +5,139 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
+#include <numeric>
 #include <utility>
 #include <vector>
 
 namespace shatter {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+constexpr double kMicrosecondsPerMs = 1000.0;
+
+/// One figure of a cell over its repetitions: wall and CPU time per iteration (us), and counters.
+struct Series {
+  std::string name;
+  int iterations = 1;
+  std::vector<double> real_us;
+  std::vector<double> cpu_us;
+  std::vector<std::pair<std::string, std::vector<double>>> counters;
+};
+
+double mean_of(const std::vector<double>& v) {
+  return v.empty() ? 0.0 : std::accumulate(v.begin(), v.end(), 0.0) / static_cast<double>(v.size());
+}
+
+/// The sample standard deviation (n - 1), as Google Benchmark's stddev aggregate; 0 below 2 samples.
+double stddev_of(const std::vector<double>& v) {
+  if (v.size() < 2) return 0.0;
+  const double m = mean_of(v);
+  double sum = 0.0;
+  for (const double x : v) sum += (x - m) * (x - m);
+  return std::sqrt(sum / static_cast<double>(v.size() - 1));
+}
+
+/// The coefficient of variation; 0 when the mean is 0.
+double cv_of(const std::vector<double>& v) {
+  const double m = mean_of(v);
+  return m == 0.0 ? 0.0 : stddev_of(v) / m;
+}
+
+class Writer {
+ public:
+  Writer(int repetitions, bool aggregates_only) : repetitions_(repetitions), aggregates_only_(aggregates_only) {}
+
+  void add(const Series& s) {
+    if (!aggregates_only_)
+      for (std::size_t k = 0; k < s.real_us.size(); ++k) {
+        Json b = entry(s.name, s.name, "iteration", s.iterations, s.real_us[k], s.cpu_us[k]);
+        b["repetition_index"] = static_cast<int>(k);
+        for (const auto& [counter, values] : s.counters) b[counter] = values[k];
+        benchmarks_.push_back(std::move(b));
+      }
+    using Stat = double (*)(const std::vector<double>&);
+    const std::pair<const char*, Stat> aggregates[] = {
+        {"mean", &mean_of}, {"median", [](const std::vector<double>& v) { return median_of(v); }},
+        {"stddev", &stddev_of}, {"cv", &cv_of}};
+    for (const auto& [aggregate, stat] : aggregates) {
+      Json b = entry(s.name + "_" + aggregate, s.name, "aggregate", static_cast<int>(s.real_us.size()),
+                     stat(s.real_us), stat(s.cpu_us));
+      b["aggregate_name"] = aggregate;
+      b["aggregate_unit"] = std::string(aggregate) == "cv" ? "percentage" : "time";
+      for (const auto& [counter, values] : s.counters) b[counter] = stat(values);
+      benchmarks_.push_back(std::move(b));
+    }
+    ++family_;
+  }
+
+  void add_failed(const std::string& name, const std::string& reason) {
+    Json b = entry(name, name, "iteration", 0, 0.0, 0.0);
+    b["repetition_index"] = 0;
+    b["error_occurred"] = true;
+    b["error_message"] = reason;
+    benchmarks_.push_back(std::move(b));
+    ++family_;
+  }
+
+  Json take() { return std::move(benchmarks_); }
+
+ private:
+  Json entry(const std::string& name, const std::string& run_name, const char* run_type, int iterations,
+             double real_us, double cpu_us) const {
+    return Json{{"name", name},
+                {"family_index", family_},
+                {"per_family_instance_index", 0},
+                {"run_name", run_name},
+                {"run_type", run_type},
+                {"repetitions", repetitions_},
+                {"threads", 1},
+                {"iterations", iterations},
+                {"real_time", real_us},
+                {"cpu_time", cpu_us},
+                {"time_unit", "us"}};
+  }
+
+  int repetitions_;
+  bool aggregates_only_;
+  int family_ = 0;
+  Json benchmarks_ = Json::array();
+};
+
+}  // namespace
 
 nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::string& case_name,
-                                           const RunContext& context) {
-  using Json = nlohmann::ordered_json;
-  Json benchmarks = Json::array();
-  int family = 0;
-  // The cell's figures shown as counters (none: the entries carry no counters).
-  std::vector<std::pair<std::string, std::vector<double>>> counters;
-  const auto add = [&](const std::string& name, const std::vector<double>& per_rep) {
-    for (std::size_t k = 0; k < per_rep.size(); ++k) {
-      benchmarks.push_back({{"name", name},
-                            {"family_index", family},
-                            {"per_family_instance_index", 0},
-                            {"run_name", name},
-                            {"run_type", "iteration"},
-                            {"repetitions", static_cast<int>(per_rep.size())},
-                            {"repetition_index", static_cast<int>(k)},
-                            {"threads", 1},
-                            {"iterations", grid.frames},
-                            {"real_time", per_rep[k]},
-                            {"cpu_time", per_rep[k]},
-                            {"time_unit", "ms"}});
-      for (const auto& [counter, values] : counters) benchmarks.back()[counter] = values[k];
-    }
-    const double median = median_of(per_rep);
-    benchmarks.push_back({{"name", name + "_median"},
-                          {"family_index", family},
-                          {"per_family_instance_index", 0},
-                          {"run_name", name},
-                          {"run_type", "aggregate"},
-                          {"repetitions", static_cast<int>(per_rep.size())},
-                          {"threads", 1},
-                          {"aggregate_name", "median"},
-                          {"aggregate_unit", "time"},
-                          {"iterations", static_cast<int>(per_rep.size())},
-                          {"real_time", median},
-                          {"cpu_time", median},
-                          {"time_unit", "ms"}});
-    for (const auto& [counter, values] : counters) benchmarks.back()[counter] = median_of(values);
-    counters.clear();
-    ++family;
-  };
+                                           const RunContext& context, bool aggregates_only) {
+  Writer writer(grid.repetitions, aggregates_only);
+  const double frames = static_cast<double>(std::max(grid.frames, 1));
   for (const GridCell& c : grid.cells) {
     const std::string prefix = fmt::format("{}/{}x{}/", case_name, c.prefracture, c.runtime);
-    if (!c.failed.empty()) {  // Google Benchmark's form of a benchmark that could not run
-      benchmarks.push_back({{"name", prefix + "worst_frame"},
-                            {"family_index", family++},
-                            {"per_family_instance_index", 0},
-                            {"run_name", prefix + "worst_frame"},
-                            {"run_type", "iteration"},
-                            {"repetitions", grid.repetitions},
-                            {"repetition_index", 0},
-                            {"threads", 1},
-                            {"iterations", 0},
-                            {"real_time", 0},
-                            {"cpu_time", 0},
-                            {"time_unit", "ms"},
-                            {"error_occurred", true},
-                            {"error_message", c.failed}});
+    if (!c.failed.empty() || c.samples.empty()) {  // Google Benchmark's form of a benchmark that could not run
+      writer.add_failed(prefix + "worst_frame", c.failed.empty() ? std::string("no samples") : c.failed);
       continue;
     }
-    std::vector<double> worst;
-    for (const GridSample& s : c.samples) worst.push_back(s.worst_frame_ms);
+    Series worst{prefix + "worst_frame", 1, {}, {}, {}};
+    for (const GridSample& s : c.samples) {
+      worst.real_us.push_back(s.worst_frame_ms * kMicrosecondsPerMs);
+      worst.cpu_us.push_back(s.worst_frame_cpu_ms * kMicrosecondsPerMs);
+    }
     for (const Figure& f : c.samples.front().figures.figures()) {
       if ((f.spec.outputs & kFigureInGbench) == 0) continue;
       std::vector<double> values;
       for (const GridSample& s : c.samples) values.push_back(s.figures.value_or(f.spec.name, f.spec.fallback));
-      counters.emplace_back(f.spec.name, std::move(values));
+      worst.counters.emplace_back(f.spec.name, std::move(values));
     }
-    add(prefix + "worst_frame", worst);
+    writer.add(worst);
     for (const Stage st : kAllStages) {
-      std::vector<double> v;
-      for (const GridSample& s : c.samples) v.push_back(s.stages_ms[static_cast<std::size_t>(st)]);
-      if (std::all_of(v.begin(), v.end(), [](double x) { return x == 0.0; })) continue;
-      add(prefix + std::string(stage_name(st)), v);
+      const auto i = static_cast<std::size_t>(st);
+      Series stage{prefix + std::string(stage_name(st)), grid.frames, {}, {}, {}};
+      for (const GridSample& s : c.samples) {
+        stage.real_us.push_back(s.stages_ms[i] / frames * kMicrosecondsPerMs);
+        stage.cpu_us.push_back(s.stages_cpu_ms[i] / frames * kMicrosecondsPerMs);
+      }
+      if (std::all_of(stage.real_us.begin(), stage.real_us.end(), [](double x) { return x == 0.0; })) continue;
+      writer.add(stage);
     }
   }
   Json ctx = {{"date", context.date},
@@ -96,11 +150,11 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
               {"load_avg", Json::array()},
               {"library_build_type", context.build_type == "Debug" ? "debug" : "release"},
               {"shatterbench", to_json(context)}};
-  return {{"context", ctx}, {"benchmarks", benchmarks}};
+  return {{"context", ctx}, {"benchmarks", writer.take()}};
 }
 
 std::string GbenchGridReporter::render(const GridReport& r) const {
-  return grid_to_gbench_json(r.grid, r.case_name, r.context).dump(1) + "\n";
+  return grid_to_gbench_json(r.grid, r.case_name, r.context, aggregates_only_).dump(1) + "\n";
 }
 
 }  // namespace shatter

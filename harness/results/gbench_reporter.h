@@ -1,16 +1,25 @@
 #pragma once
 /// A grid in Google Benchmark's JSON output schema (`context` + `benchmarks`), so that its
-/// tools/compare.py and CI benchmark actions read shatterbench results.
+/// tools/compare.py and CI benchmark actions read shatterbench results (`grid --gbench FILE`, written
+/// beside the native results; docs/results.md, "Google Benchmark JSON").
 ///
-/// Mapping: one benchmark run per cell, repetition and figure, named
-/// `<case>/<prefracture>x<runtime>/worst_frame` (the gated figure) and
-/// `<case>/<prefracture>x<runtime>/<stage>` (stage time inside frames), with `run_type` "iteration",
-/// `repetitions`, `repetition_index`, `iterations` = frames, `real_time` = `cpu_time` = the figure in ms,
-/// `time_unit` "ms"; plus one `run_type` "aggregate" entry per cell and figure with `aggregate_name`
-/// "median". A failed cell (`grid --timeout`) is one `worst_frame` entry with `error_occurred` true and
-/// `error_message` its reason, as Google Benchmark writes a benchmark that skipped with an error. Each
-/// named figure whose spec asks for Google Benchmark (kFigureInGbench) is a user counter of the cell's
-/// `worst_frame` entries: its value per repetition, and the median in the aggregate. The
+/// Mapping, per cell, with names unique within a file:
+///   - `<case>/<prefracture>x<runtime>/worst_frame`: the gated figure, one frame, so `iterations` 1;
+///     `real_time` the slowest frame's wall time, `cpu_time` the thread CPU time of the frame with the
+///     most of it (the CPU clock, not a copy of the wall time);
+///   - `<case>/<prefracture>x<runtime>/<stage>`: the stage's time per frame (its time inside the
+///     repetition's frames divided by the frame count, which is `iterations`, as Google Benchmark
+///     reports a per-iteration time over that many iterations); `cpu_time` the same from the thread
+///     CPU clock. Stages that took no time in any repetition are left out.
+/// Each has one `run_type` "iteration" entry per repetition (`repetitions`, `repetition_index`) and the
+/// aggregates Google Benchmark writes for repetitions: `_mean`, `_median`, `_stddev` (time) and `_cv`
+/// (a ratio, `aggregate_unit` "percentage"). Times are in microseconds (`time_unit` "us"): compare.py
+/// prints times without decimals, so milliseconds would show a 2.6 ms frame as "3". With
+/// `aggregates_only` (`--gbench-aggregates-only`) only the aggregates are written, as
+/// `--benchmark_report_aggregates_only` does. A failed cell (`grid --timeout`, a fracturer that threw)
+/// is one `worst_frame` entry with `error_occurred` true and `error_message` its reason. Each named
+/// figure whose spec asks for Google Benchmark (kFigureInGbench) is a user counter of the cell's
+/// `worst_frame` entries: its value per repetition, and its aggregate in each aggregate entry. The
 /// context holds Google Benchmark's keys (`date`, `host_name`, `executable`, `num_cpus`,
 /// `mhz_per_cpu`, `cpu_scaling_enabled`, `caches`, `library_build_type`) and shatterbench's own context.
 
@@ -25,14 +34,18 @@ namespace shatter {
 /// Google Benchmark's JSON of a grid.
 class GbenchGridReporter final : public GridReporter {
  public:
-  /// "gbench".
-  [[nodiscard]] std::string_view format() const override { return "gbench"; }
+  explicit GbenchGridReporter(bool aggregates_only = false) : aggregates_only_(aggregates_only) {}
+  /// "gbench" or "gbench-aggregates".
+  [[nodiscard]] std::string_view format() const override { return aggregates_only_ ? "gbench-aggregates" : "gbench"; }
   /// grid_to_gbench_json of the report, as text (`dump(1)` and a line break).
   [[nodiscard]] std::string render(const GridReport& report) const override;
+
+ private:
+  bool aggregates_only_;
 };
 
-/// `grid` for case `case_name` in Google Benchmark's schema.
+/// `grid` for case `case_name` in Google Benchmark's schema; only the aggregates with `aggregates_only`.
 nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::string& case_name,
-                                           const RunContext& context);
+                                           const RunContext& context, bool aggregates_only = false);
 
 }  // namespace shatter

@@ -114,7 +114,7 @@ TEST_CASE("cli: grid writes gbench JSON and JUnit, and shards refuse bad specs",
   CHECK(r.exit_code == 1);
   const auto g = nlohmann::json::parse(slurp(dir / "g.json"));
   CHECK(g.at("benchmarks")[0].at("name") == "building/10x5/worst_frame");
-  CHECK(g.at("benchmarks")[0].at("time_unit") == "ms");
+  CHECK(g.at("benchmarks")[0].at("time_unit") == "us");
   const std::string xml = slurp(dir / "g.xml");
   CHECK(xml.find("failures=\"1\"") != std::string::npos);
   CHECK(xml.find("<failure message=\"worst frame") != std::string::npos);
@@ -125,6 +125,25 @@ TEST_CASE("cli: grid writes gbench JSON and JUnit, and shards refuse bad specs",
   }
   CHECK(run_cli(kSmall + " --format xml").exit_code == 2);
   CHECK(run_cli(kSmall + " --metric cycles").exit_code == 2);
+}
+
+TEST_CASE("cli: --gbench writes Google Benchmark's JSON beside the native results", "[cli][compare]") {
+  const auto dir = scratch("gbench-beside");
+  const auto r = run_cli("grid --case building --prefracture 10 --runtime 5 --repetitions 2 --frames 2 --no-cache "
+                         "--json " + (dir / "n.json").string() + " --gbench " + (dir / "g.json").string());
+  CHECK(r.exit_code == 0);
+  const auto native = nlohmann::json::parse(slurp(dir / "n.json"));
+  CHECK(native.contains("cells"));
+  const auto g = nlohmann::json::parse(slurp(dir / "g.json"));
+  CHECK(g.at("benchmarks")[0].at("name") == "building/10x5/worst_frame");
+  CHECK(g.at("benchmarks")[0].at("run_type") == "iteration");
+  const auto a = run_cli("grid --case building --prefracture 10 --runtime 5 --repetitions 2 --frames 2 --no-cache "
+                         "--gbench " + (dir / "a.json").string() + " --gbench-aggregates-only");
+  CHECK(a.exit_code == 0);
+  for (const auto& b : nlohmann::json::parse(slurp(dir / "a.json")).at("benchmarks")) CHECK(b.at("run_type") == "aggregate");
+  // One file cannot be both outputs.
+  CHECK(run_cli(kSmall + " --json " + (dir / "same.json").string() + " --gbench " + (dir / "same.json").string())
+            .exit_code == 2);
 }
 
 TEST_CASE("cli: a baseline changes only with --update-baseline, and not when the gate fails", "[cli][compare]") {

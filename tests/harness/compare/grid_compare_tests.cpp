@@ -15,8 +15,11 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <string>
 
 namespace {
@@ -261,26 +264,74 @@ TEST_CASE("merge --repetitions: runs of the same cells join their samples, summa
 }
 
 TEST_CASE("gbench output has Google Benchmark's keys", "[compare]") {
-  const auto j = grid_to_gbench_json(synthetic(3, 1.0, 0.05, 1), "synthetic", context());
+  GridResult g = synthetic(3, 1.0, 0.05, 1);
+  // CPU times that differ from the wall times, so a copy of the wall time would show.
+  for (GridCell& c : g.cells)
+    for (GridSample& s : c.samples) {
+      s.worst_frame_cpu_ms = 0.5 * s.worst_frame_ms;
+      for (double& t : s.stages_cpu_ms) t *= 0.25;
+    }
+  const auto j = grid_to_gbench_json(g, "synthetic", context());
   for (const char* key : {"date", "host_name", "executable", "num_cpus", "mhz_per_cpu", "cpu_scaling_enabled", "caches",
                           "library_build_type"})
     CHECK(j.at("context").contains(key));
-  int iterations = 0, aggregates = 0;
+  int iterations = 0;
+  std::map<std::string, int> aggregates;
+  std::set<std::pair<std::string, int>> seen;  // (name, repetition_index): unique within the file
   for (const auto& b : j.at("benchmarks")) {
-    for (const char* key : {"name", "run_name", "run_type", "repetitions", "threads", "iterations", "real_time",
-                            "cpu_time", "time_unit"})
+    // What tools/compare.py reads: name, time_unit, real_time, cpu_time, run_type and aggregate_name.
+    for (const char* key : {"name", "family_index", "per_family_instance_index", "run_name", "run_type",
+                            "repetitions", "threads", "iterations", "real_time", "cpu_time", "time_unit"})
       CHECK(b.contains(key));
+    CHECK(b.at("time_unit") == "us");
+    const std::string name = b.at("name");
     if (b.at("run_type") == "iteration") {
       ++iterations;
-      CHECK(b.contains("repetition_index"));
+      REQUIRE(b.contains("repetition_index"));
+      CHECK(seen.insert({name, b.at("repetition_index").get<int>()}).second);
     } else {
-      ++aggregates;
-      CHECK(b.at("aggregate_name") == "median");
+      ++aggregates[b.at("aggregate_name").get<std::string>()];
+      CHECK(seen.insert({name, -1}).second);
+      CHECK(name == b.at("run_name").get<std::string>() + "_" + b.at("aggregate_name").get<std::string>());
+      CHECK(b.at("aggregate_unit") == (b.at("aggregate_name") == "cv" ? "percentage" : "time"));
     }
   }
   CHECK(iterations == 2 * 3 * 3);  // 2 cells x (worst frame, stress, physics) x 3 repetitions
-  CHECK(aggregates == 2 * 3);
-  CHECK(j.at("benchmarks")[0].at("name") == "synthetic/10x25/worst_frame");
+  for (const char* aggregate : {"mean", "median", "stddev", "cv"}) CHECK(aggregates[aggregate] == 2 * 3);
+
+  // Values: worst frame = one frame (iterations 1), wall and CPU clocks apart; a stage = its time per
+  // frame over `frames` iterations; microseconds.
+  const GridSample& s0 = g.cells[0].samples[0];
+  const auto& first = j.at("benchmarks")[0];
+  CHECK(first.at("name") == "synthetic/10x25/worst_frame");
+  CHECK(first.at("iterations") == 1);
+  CHECK(first.at("real_time").get<double>() == Approx(1000.0 * s0.worst_frame_ms).epsilon(1e-12));
+  CHECK(first.at("cpu_time").get<double>() == Approx(1000.0 * s0.worst_frame_cpu_ms).epsilon(1e-12));
+  bool stress_found = false;
+  for (const auto& b : j.at("benchmarks")) {
+    if (b.at("name") != "synthetic/10x25/stress" || b.at("repetition_index") != 0) continue;
+    stress_found = true;
+    CHECK(b.at("iterations") == g.frames);
+    const double stress_ms = s0.stages_ms[static_cast<std::size_t>(Stage::stress)];
+    CHECK(b.at("real_time").get<double>() == Approx(1000.0 * stress_ms / g.frames).epsilon(1e-12));
+    CHECK(b.at("cpu_time").get<double>() == Approx(1000.0 * 0.25 * stress_ms / g.frames).epsilon(1e-12));
+  }
+  CHECK(stress_found);
+  // The median aggregate of the worst frame against the repetitions' values.
+  std::vector<double> worst;
+  for (const GridSample& s : g.cells[0].samples) worst.push_back(1000.0 * s.worst_frame_ms);
+  std::sort(worst.begin(), worst.end());
+  for (const auto& b : j.at("benchmarks"))
+    if (b.at("name") == "synthetic/10x25/worst_frame_median") CHECK(b.at("real_time").get<double>() == Approx(worst[1]));
+
+  // Aggregates only: the same aggregates, no iteration entry.
+  const auto agg = grid_to_gbench_json(g, "synthetic", context(), true);
+  int agg_entries = 0;
+  for (const auto& b : agg.at("benchmarks")) {
+    CHECK(b.at("run_type") == "aggregate");
+    ++agg_entries;
+  }
+  CHECK(agg_entries == 2 * 3 * 4);
 }
 
 TEST_CASE("junit: testsuites, counts and a failure element per failed case, escaped", "[compare]") {
