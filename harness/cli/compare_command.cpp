@@ -38,7 +38,10 @@ int run_compare(const CompareCommandOptions& o) {
   if (!o.markdown.empty())
     if (Status s = write_file_atomically(o.markdown, markdown); !s) return fail_input("--markdown: " + s.error().message);
   if (!o.junit.empty()) {
-    JunitSuite suite{"shatterbench.compare." + next->case_name, {}};
+    JunitSuite suite{"shatterbench.compare." + next->case_name, {}, junit_timestamp(next->context.date),
+                     next->context.hostname, {}};
+    suite.properties = {{"base", o.base}, {"new", o.next}, {"commit", next->context.commit},
+                        {"fingerprint", next->context.fingerprint}};
     for (const std::string& m : report.mismatches) suite.cases.push_back({"comparable results", suite.name, 0.0, m, {}});
     for (const ComparisonRow& r : report.rows) {
       JunitCase c{fmt::format("cell {}: {}", r.cell, r.what), suite.name, 0.0, {}, {}};

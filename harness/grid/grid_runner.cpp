@@ -202,6 +202,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
     for (const int r : runtime) {
       if (static_cast<int>(cell_index++ % static_cast<std::size_t>(o.shard_count)) != o.shard_index) continue;
       Result<GridCell> cell = Error{""};
+      const auto cell_start = std::chrono::steady_clock::now();
       if (o.cell_timeout_s > 0.0) {
         // The child runs and times the cell; its progress calls count on from `done` in its own copy.
         const int before = done;
@@ -220,6 +221,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
         }
       }
       if (!cell) return cell.error();
+      cell->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - cell_start).count();
       out.cells.push_back(std::move(*cell));
     }
   }

@@ -84,6 +84,9 @@ struct GridCell {
   /// Why the cell has no results ("timeout after 2 s", "crashed: signal 11 (Segmentation fault)"),
   /// empty when it ran. A failed cell has no samples and is neither within budget nor within latency.
   std::string failed;
+  /// Wall time the cell took, every repetition and its setup (the JUnit test's time), s; 0 when not
+  /// measured (a cell read back from results).
+  double wall_s = 0.0;
 };
 
 /// A whole grid.

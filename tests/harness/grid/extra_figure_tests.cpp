@@ -92,8 +92,8 @@ TEST_CASE("one record: a figure added to each run's record reaches every output"
   }
   CHECK(counted == 4);  // two repetitions, the mean and the median
 
-  // JUnit: a property of the cell's test case.
-  CHECK_THAT(render("junit", report), Catch::Contains("<property name=\"extra_units\" value=\"" + text + "\"/>"));
+  // JUnit: a property of the suite named after the cell's test case.
+  CHECK_THAT(render("junit", report), Catch::Contains("<property name=\"cell 6 x 3: extra_units\" value=\"" + text + "\"/>"));
 
   // Markdown: a table of its own.
   const std::string md = render("markdown", report);
