@@ -36,7 +36,8 @@ int run_compare(const CompareCommandOptions& o) {
   const std::string markdown = compare_markdown(report, o.compare);
   std::cout << markdown << std::flush;
   if (!o.markdown.empty())
-    if (Status s = write_file_atomically(o.markdown, markdown); !s) return fail_input("--markdown: " + s.error().message);
+    if (Status s = write_file_atomically(o.markdown, compare_comment_markdown(report, o.compare)); !s)
+      return fail_input("--markdown: " + s.error().message);
   if (!o.junit.empty()) {
     JunitSuite suite{"shatterbench.compare." + next->case_name, {}, junit_timestamp(next->context.date),
                      next->context.hostname, {}};
@@ -80,7 +81,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
     exit_code = run_compare(*o);
   });
   cmd->add_option("--junit", o->junit, "Write JUnit XML here: one test case per comparison");
-  cmd->add_option("--markdown", o->markdown, "Also write the Markdown table to this file");
+  cmd->add_option("--markdown", o->markdown,
+                  "Also write the report as a pull-request comment here: verdict and regressions first, every row "
+                  "folded in <details>, at most 65,000 characters");
 }
 
 }  // namespace shatter::cli

@@ -297,7 +297,57 @@ CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, cons
   return out;
 }
 
-std::string compare_markdown(const CompareReport& report, const CompareOptions& o) {
+namespace {
+
+/// The table's header for `time` (ms) or instruction counts.
+std::string table_header(bool time) {
+  const char* unit = time ? "ms" : "instr.";
+  return fmt::format("| cell | what | base median {0} | new median {0} | change | base p99 {0} | new p99 {0} | p | "
+                     "verdict |\n|---|---|---:|---:|---:|---:|---:|---:|---|\n",
+                     unit);
+}
+
+/// One row of the table.
+std::string table_row(const ComparisonRow& r, bool time) {
+  // Figures are finite (the reader refuses Inf); a difference of two huge ones may still overflow.
+  const auto value = [&](double v) {
+    if (!std::isfinite(v)) return std::string("n/a");
+    return time ? fmt::format("{:.3f}", v) : fmt::format("{:.0f}", v);
+  };
+  const char* verdict = r.verdict == Verdict::regressed ? "**regressed**"
+                        : r.verdict == Verdict::failed  ? "**failed**"
+                        : r.verdict == Verdict::improved ? "improved"
+                                                         : "same";
+  if (r.what == "accuracy")
+    return fmt::format("| {} | accuracy | {:.2g} | {:.2g} | | | | | {}{} |\n", r.cell, r.base_median, r.new_median,
+                       verdict, r.note.empty() ? "" : ": " + r.note);
+  return fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {}{} |\n", r.cell, r.what, value(r.base_median),
+                     value(r.new_median), change_text(r, time), value(r.base_p99), value(r.new_p99),
+                     r.p_value < 0 ? std::string("n/a") : fmt::format("{:.2g}", r.p_value), verdict,
+                     r.note.empty() ? "" : ": " + r.note);
+}
+
+bool is_bad(const ComparisonRow& r) { return r.verdict == Verdict::regressed || r.verdict == Verdict::failed; }
+
+/// The rows, failures and regressions first, then improvements, then the rest, each in report order.
+std::vector<const ComparisonRow*> ranked_rows(const CompareReport& report) {
+  const auto rank = [](Verdict v) {
+    switch (v) {
+      case Verdict::failed: return 0;
+      case Verdict::regressed: return 1;
+      case Verdict::improved: return 2;
+      case Verdict::same: return 3;
+    }
+    return 3;
+  };
+  std::vector<const ComparisonRow*> rows;
+  for (const ComparisonRow& r : report.rows) rows.push_back(&r);
+  std::stable_sort(rows.begin(), rows.end(), [&](const auto* a, const auto* b) { return rank(a->verdict) < rank(b->verdict); });
+  return rows;
+}
+
+/// Mismatches, warnings, the calibration and the verdict line.
+std::string compare_preamble(const CompareReport& report, const CompareOptions& o) {
   std::string out;
   int regressed = 0, failed = 0, improved = 0;
   for (const ComparisonRow& r : report.rows) {
@@ -305,6 +355,12 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
     failed += r.verdict == Verdict::failed;
     improved += r.verdict == Verdict::improved;
   }
+  const bool time = report.metric == "time";
+  out += fmt::format("**{}**: {} regressed, {} accuracy failures, {} improved, {} rows; metric {}, max slowdown "
+                     "{:g} %{}\n\n",
+                     report.failed() ? "FAIL" : "PASS", regressed, failed, improved, report.rows.size(), report.metric,
+                     100 * o.max_slowdown,
+                     time ? fmt::format(", alpha {:g}, {} clock", o.alpha, o.clock) : std::string());
   if (!report.mismatches.empty()) {
     out += "**Cannot compare:**\n\n";
     for (const std::string& m : report.mismatches) out += "- " + m + "\n";
@@ -318,50 +374,56 @@ std::string compare_markdown(const CompareReport& report, const CompareOptions& 
                        report.base_calibration_ms, report.new_calibration_ms,
                        100 * (report.new_calibration_ms / report.base_calibration_ms - 1.0),
                        report.normalized ? "; CPU times are normalized by it" : "; not normalized");
-  const bool time = report.metric == "time";
-  out += fmt::format("**{}**: {} regressed, {} accuracy failures, {} improved, {} rows; metric {}, max slowdown "
-                     "{:g} %{}\n\n",
-                     report.failed() ? "FAIL" : "PASS", regressed, failed, improved, report.rows.size(), report.metric,
-                     100 * o.max_slowdown,
-                     time ? fmt::format(", alpha {:g}, {} clock", o.alpha, o.clock) : std::string());
-  const char* unit = time ? "ms" : "instr.";
-  out += fmt::format("| cell | what | base median {0} | new median {0} | change | base p99 {0} | new p99 {0} | p | "
-                     "verdict |\n",
-                     unit);
-  out += "|---|---|---:|---:|---:|---:|---:|---:|---|\n";
-  const auto rank = [](Verdict v) {
-    switch (v) {
-      case Verdict::failed: return 0;
-      case Verdict::regressed: return 1;
-      case Verdict::improved: return 2;
-      case Verdict::same: return 3;
-    }
-    return 3;
-  };
-  std::vector<const ComparisonRow*> rows;
-  for (const ComparisonRow& r : report.rows) rows.push_back(&r);
-  std::stable_sort(rows.begin(), rows.end(), [&](const auto* a, const auto* b) { return rank(a->verdict) < rank(b->verdict); });
-  // Figures are finite (the reader refuses Inf); a difference of two huge ones may still overflow.
-  const auto value = [&](double v) {
-    if (!std::isfinite(v)) return std::string("n/a");
-    return time ? fmt::format("{:.3f}", v) : fmt::format("{:.0f}", v);
-  };
-  for (const ComparisonRow* r : rows) {
-    const char* verdict = r->verdict == Verdict::regressed ? "**regressed**"
-                          : r->verdict == Verdict::failed  ? "**failed**"
-                          : r->verdict == Verdict::improved ? "improved"
-                                                            : "same";
-    if (r->what == "accuracy") {
-      out += fmt::format("| {} | accuracy | {:.2g} | {:.2g} | | | | | {}{} |\n", r->cell, r->base_median, r->new_median,
-                         verdict, r->note.empty() ? "" : ": " + r->note);
-      continue;
-    }
-    out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {}{} |\n", r->cell, r->what,
-                       value(r->base_median), value(r->new_median), change_text(*r, time), value(r->base_p99),
-                       value(r->new_p99), r->p_value < 0 ? std::string("n/a") : fmt::format("{:.2g}", r->p_value),
-                       verdict, r->note.empty() ? "" : ": " + r->note);
-  }
   return out;
+}
+
+}  // namespace
+
+std::string compare_markdown(const CompareReport& report, const CompareOptions& o) {
+  const bool time = report.metric == "time";
+  std::string out = compare_preamble(report, o) + table_header(time);
+  for (const ComparisonRow* r : ranked_rows(report)) out += table_row(*r, time);
+  return out;
+}
+
+std::string compare_comment_markdown(const CompareReport& report, const CompareOptions& o, std::size_t max_chars) {
+  const bool time = report.metric == "time";
+  std::string head = "### shatterbench compare\n\n" + compare_preamble(report, o);
+  const std::vector<const ComparisonRow*> rows = ranked_rows(report);
+  std::size_t bad = 0;
+  while (bad < rows.size() && is_bad(*rows[bad])) ++bad;
+  std::string problems;
+  if (bad > 0) {
+    problems = fmt::format("#### Regressions and failures ({})\n\n", bad) + table_header(time);
+    for (std::size_t i = 0; i < bad; ++i) problems += table_row(*rows[i], time);
+    problems += "\n";
+  }
+  const std::string open = fmt::format("<details><summary>All {} rows</summary>\n\n", rows.size());
+  const std::string close = "\n</details>\n";
+  // The folded table takes what the limit leaves; rows that do not fit (the last: unchanged ones) are
+  // counted instead. A note of the cut needs at most this much.
+  constexpr std::size_t kNoteChars = 160;
+  std::string table = table_header(time);
+  std::size_t shown = 0;
+  const std::size_t fixed = head.size() + problems.size() + open.size() + close.size() + kNoteChars;
+  for (const ComparisonRow* r : rows) {
+    const std::string line = table_row(*r, time);
+    if (fixed + table.size() + line.size() > max_chars) break;
+    table += line;
+    ++shown;
+  }
+  if (shown < rows.size())
+    table += fmt::format("\n{} of {} rows left out to fit a comment; `shatterbench compare` prints them all.\n",
+                         rows.size() - shown, rows.size());
+  std::string out = head + problems;
+  // Even the regressions may not fit: then the folded table is left out and the text cut at a line.
+  if (out.size() + open.size() + table.size() + close.size() > max_chars) {
+    const std::string cut = "\n(cut to fit a comment; `shatterbench compare` prints the whole report)\n";
+    std::size_t at = out.rfind('\n', max_chars > cut.size() ? max_chars - cut.size() : 0);
+    out = out.substr(0, at == std::string::npos ? 0 : at + 1) + cut;
+    return out;
+  }
+  return out + open + table + close;
 }
 
 }  // namespace shatter

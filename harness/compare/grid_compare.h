@@ -13,6 +13,7 @@
 #include "algorithms/core/result.h"
 #include "harness/results/grid_reader.h"
 
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -84,8 +85,17 @@ Status check_compare_options(const CompareOptions& options);
 CompareReport compare_grids(const StoredGrid& base, const StoredGrid& next, const CompareOptions& options,
                             const AccuracyTolerances& tolerances = {});
 
-/// The report as Markdown (a pull-request comment): mismatches, warnings, a verdict line, and a table
-/// of the rows (regressions and failures first, then improvements, then the rest).
+/// The report as Markdown (compare's standard output): the verdict line, mismatches, warnings, and a
+/// table of every row (regressions and failures first, then improvements, then the rest).
 std::string compare_markdown(const CompareReport& report, const CompareOptions& options);
+
+/// GitHub's limit on a comment's body is 65,536 characters; this leaves room for a header of the CI's.
+inline constexpr std::size_t kCommentChars = 65000;
+
+/// The report as a pull-request comment (`compare --markdown FILE`): the verdict line, mismatches and
+/// warnings, the regressions and failures in a table of their own, then every row in a table folded
+/// in `<details>`; at most `max_chars` characters (rows that do not fit are counted, not shown).
+std::string compare_comment_markdown(const CompareReport& report, const CompareOptions& options,
+                                     std::size_t max_chars = kCommentChars);
 
 }  // namespace shatter

@@ -359,6 +359,82 @@ TEST_CASE("junit: testsuites, counts and a failure element per failed case, esca
   CHECK(count("<testsuites ") == count("</testsuites>"));
 }
 
+TEST_CASE("compare --markdown: a pull-request comment, verdict and regressions first, under 65,000 characters",
+          "[compare]") {
+  // A 50-cell grid (10 pre-fracture x 5 runtime counts) with every stage timed, 9 repetitions; the
+  // new run is 30 % slower in its first three cells' stress stage.
+  const auto grid = [](double slow, std::uint64_t seed) {
+    GridResult g;
+    g.budget_ms = 33.3;
+    g.repetitions = 9;
+    g.frames = 4;
+    g.same_seed = true;
+    SplitMix64 rng(seed);
+    int index = 0;
+    for (int p = 10; p <= 100; p += 10)
+      for (const int r : {5, 10, 15, 20, 25}) {
+        GridCell c;
+        c.prefracture = p;
+        c.runtime = r;
+        c.prefracturer = c.fracturer = "plane-slice";
+        c.stress = "von-mises";
+        const double cell_slow = index++ < 3 ? slow : 1.0;
+        for (int k = 0; k < g.repetitions; ++k) {
+          GridSample s;
+          s.seed = static_cast<std::uint64_t>(k + 1);
+          const double f = 1.0 + 0.02 * (2.0 * rng.uniform() - 1.0);
+          s.frame_ms = {0.3 * f, 3.0 * f, 0.4 * f, 0.35 * f};
+          s.worst_frame_ms = 3.0 * f;
+          s.event_ms = 3.0 * f;
+          s.event_frame = 1;
+          for (const Stage st : kAllStages) s.stages_ms[static_cast<std::size_t>(st)] = 0.1 * f;
+          s.stages_ms[static_cast<std::size_t>(Stage::stress)] = 1.0 * f * cell_slow;
+          s.worst_frame_cpu_ms = 2.9 * f;
+          s.stages_cpu_ms = s.stages_ms;
+          c.samples.push_back(s);
+        }
+        c.worst_frame_ms = 3.0;
+        g.cells.push_back(c);
+      }
+    return g;
+  };
+  const StoredGrid base = stored(grid(1.0, 1), context(), "base.json");
+  const StoredGrid next = stored(grid(1.3, 2), context(), "new.json");
+  const CompareReport report = compare_grids(base, next, {});
+  REQUIRE(report.failed());
+  CHECK(count_rows(report, Verdict::regressed) == 3);
+  REQUIRE(report.rows.size() > 500);
+  const std::string comment = compare_comment_markdown(report, {});
+  CHECK(comment.size() <= kCommentChars);
+  // The verdict, then the regressions, then the folded table.
+  const std::size_t verdict = comment.find("**FAIL**: 3 regressed");
+  const std::size_t regressions = comment.find("#### Regressions and failures (3)");
+  const std::size_t details = comment.find("<details><summary>All ");
+  REQUIRE(verdict != std::string::npos);
+  REQUIRE(regressions != std::string::npos);
+  REQUIRE(details != std::string::npos);
+  CHECK(verdict < regressions);
+  CHECK(regressions < details);
+  CHECK(comment.find("</details>") > details);
+  // Every regression is in the regressions table, before the fold.
+  const std::string before_fold = comment.substr(0, details);
+  std::size_t listed = 0;
+  for (std::size_t at = before_fold.find("**regressed**"); at != std::string::npos;
+       at = before_fold.find("**regressed**", at + 1))
+    ++listed;
+  CHECK(listed == 3);
+  CHECK_THAT(comment, !Catch::Contains("left out"));  // 50 cells fit whole
+  // A tighter limit: the unchanged rows at the end of the folded table are counted instead.
+  const std::string tight = compare_comment_markdown(report, {}, 20000);
+  CHECK(tight.size() <= 20000);
+  CHECK_THAT(tight, Catch::Contains("rows left out to fit a comment") && Catch::Contains("#### Regressions and failures (3)"));
+  // A small report is whole: every row folded, nothing left out.
+  const StoredGrid small = stored(synthetic(10, 1.0, 0.05, 1), context(), "a.json");
+  const std::string whole = compare_comment_markdown(compare_grids(small, small, {}), {});
+  CHECK_THAT(whole, Catch::Contains("**PASS**") && Catch::Contains("<details>") && !Catch::Contains("left out") &&
+                        !Catch::Contains("#### Regressions"));
+}
+
 TEST_CASE("compare: a busier machine is not a regression once normalized by the calibration", "[compare]") {
   const auto with_calibration = [](GridResult g, double calibration) {
     for (GridCell& c : g.cells)
