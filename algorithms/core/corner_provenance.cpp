@@ -62,9 +62,24 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
   // Every face's values appended in order to one array reserved once (a run of whole faces in one
   // copy, not zeroed first), the geometry the piece's own, moved.
   MeshAttributes& attr = out.attributes;
+  if (materials) attr.materials.resize(faces);
+  if (stride == 0) {
+    if (!materials) return Error{who_ + ": a tracked solid carries neither corner values nor materials"};
+    // Materials only: no corner value to evaluate (and no array to point into).
+    for (std::size_t f = 0; f < faces; ++f) {
+      const std::int32_t record = records[f];
+      attr.materials[f] = is_cap(record)             ? attr.cut.material
+                          : record < solid_faces_ ? solid_.attributes.materials[static_cast<std::size_t>(record)]
+                                                  : solid_.attributes.materials[static_cast<std::size_t>(
+                                                        cuts_[static_cast<std::size_t>(record - solid_faces_)].face)];
+    }
+    out.vertices = std::move(piece.vertices);
+    out.triangles = std::move(piece.triangles);
+    out.tags = std::move(piece.tags);
+    return out;
+  }
   std::vector<double>& corners = attr.corners;
   corners.reserve(faces * face_values);
-  if (materials) attr.materials.resize(faces);
   const double* solid_values = solid_.attributes.corners.data();
   std::size_t f = 0;
   while (f < faces) {

@@ -184,6 +184,40 @@ TEST_CASE("attributes: every fracturer carries affine UVs, normals and materials
   }
 }
 
+TEST_CASE("attributes: materials without corner values go through every fracturer", "[attributes][conformance]") {
+  Mesh box = make_box(Vec3(2.0, 3.0, 1.5));
+  MaterialSlot brick;
+  brick.name = "brick";
+  box.attributes.slots = {brick};
+  box.attributes.materials.assign(box.triangles.size(), 0);
+  prepare_cut_faces(box);
+  REQUIRE(box.attributes.layout.empty());
+  REQUIRE(check_attributes(box, "box").ok());
+  const Registries r = test::builtin_registries();
+  for (const std::string& name : r.fracturers.names()) {
+    INFO(name);
+    auto fracturer = r.fracturers.create(name);
+    REQUIRE(fracturer.ok());
+    FractureParams params;
+    params.fragments = 6;
+    params.seed = 3;
+    const Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(box, params);
+    REQUIRE(fragments.ok());
+    int cut_faces = 0;
+    for (const Fragment& f : *fragments) {
+      REQUIRE(check_attributes(f.mesh, name).ok());
+      REQUIRE(f.mesh.attributes.materials.size() == f.mesh.triangles.size());
+      CHECK(f.mesh.attributes.corners.empty());
+      for (std::size_t t = 0; t < f.mesh.triangles.size(); ++t) {
+        const bool cut = f.mesh.tags[t] == FaceTag::cut;
+        cut_faces += cut ? 1 : 0;
+        CHECK(f.mesh.attributes.materials[t] == (cut ? box.attributes.cut.material : 0));
+      }
+    }
+    if (fragments->size() > 1) CHECK(cut_faces > 0);
+  }
+}
+
 TEST_CASE("attributes: every fracturer refuses a corner value that is not finite and names its triangle",
           "[attributes][conformance]") {
   const Mesh box = attributed_box(make_box(Vec3(2.0, 3.0, 1.5)), AffineUv{});
