@@ -24,8 +24,8 @@ std::vector<fs::path> candidate_dirs() {
   std::error_code ec;
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (!ec && !exe.empty()) {
-    dirs.push_back((exe.parent_path() / ".." / ".." / "cases").lexically_normal());                  // build/bin
     dirs.push_back((exe.parent_path() / ".." / "share" / "shatterbench" / "cases").lexically_normal());  // installed
+    dirs.push_back((exe.parent_path() / ".." / ".." / "cases").lexically_normal());                  // build/bin
   }
 #ifdef SHATTER_SOURCE_DIR
   dirs.push_back(fs::path(SHATTER_SOURCE_DIR) / "cases");

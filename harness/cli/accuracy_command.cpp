@@ -119,27 +119,27 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
     if (wants(o.families, "fracture") && !c.prefracture.explicit_planes()) {
       progress.step(c.name + ", fracture");
       Result<Solid> solid = build_case_solid(c);
-      if (!solid) return fail_input(solid.error().message);
+      if (!solid) return progress.end(), fail_input(solid.error().message);
       std::optional<Impact> impact;
       if (!c.impacts.empty()) impact = c.impacts.front().impact;
       Result<std::vector<AccuracyPoint>> p = fracture_accuracy(c.name, *solid, impact, fo, registries);
-      if (!p) return fail_input(p.error().message);
+      if (!p) return progress.end(), fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
     // The colliders of the case's own pre-fracture pieces at each budget.
     if (wants(o.families, "colliders") && !c.prefracture.explicit_planes()) {
       progress.step(c.name + ", colliders");
       Result<Solid> solid = build_case_solid(c);
-      if (!solid) return fail_input(solid.error().message);
+      if (!solid) return progress.end(), fail_input(solid.error().message);
       Result<std::vector<AccuracyPoint>> p =
           collider_accuracy(c.name, *solid, c.prefracture.fracturer, co, registries);
-      if (!p) return fail_input(p.error().message);
+      if (!p) return progress.end(), fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
     if (wants(o.families, "stress")) {
       progress.step(c.name + ", stress");
       Result<std::vector<AccuracyPoint>> p = stress_accuracy(c, so, registries);
-      if (!p) return fail_input(p.error().message);
+      if (!p) return progress.end(), fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
   }

@@ -419,7 +419,8 @@ std::string compare_comment_markdown(const CompareReport& report, const CompareO
   // Even the regressions may not fit: then the folded table is left out and the text cut at a line.
   if (out.size() + open.size() + table.size() + close.size() > max_chars) {
     const std::string cut = "\n(cut to fit a comment; `shatterbench compare` prints the whole report)\n";
-    std::size_t at = out.rfind('\n', max_chars > cut.size() ? max_chars - cut.size() : 0);
+    // A line break at index i keeps i + 1 characters: i + 1 + cut.size() <= max_chars.
+    std::size_t at = max_chars > cut.size() ? out.rfind('\n', max_chars - cut.size() - 1) : std::string::npos;
     out = out.substr(0, at == std::string::npos ? 0 : at + 1) + cut;
     return out;
   }

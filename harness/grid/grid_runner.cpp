@@ -218,6 +218,11 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
         } catch (const std::exception& e) {
           cell = failed_grid_cell(grid_cell_settings(c, o, p, r), std::string("threw: ") + e.what());
           done = before + o.repetitions;
+          if (o.progress) o.progress(done, total);
+        } catch (...) {
+          cell = failed_grid_cell(grid_cell_settings(c, o, p, r), "threw a non-standard exception");
+          done = before + o.repetitions;
+          if (o.progress) o.progress(done, total);
         }
       }
       if (!cell) return cell.error();

@@ -7,6 +7,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include <exception>
 #include <string>
 
 namespace shatter {
@@ -31,7 +32,15 @@ Result<GridCell> run_cell_isolated(const std::function<Result<GridCell>()>& run,
                                    double timeout_s, double latency_budget_ms) {
   const IsolatedRun child = run_isolated(
       [&] {
-        Result<GridCell> cell = run();
+        // An exception out of the cell (a plugin's) fails it with the same reason as in the process.
+        Result<GridCell> cell = Error{""};
+        try {
+          cell = run();
+        } catch (const std::exception& e) {
+          cell = failed_cell(settings, std::string("threw: ") + e.what());
+        } catch (...) {
+          cell = failed_cell(settings, "threw a non-standard exception");
+        }
         const Json out = cell ? Json{{"cell", grid_cell_to_json(*cell)}} : Json{{"error", cell.error().message}};
         return out.dump();
       },

@@ -43,15 +43,18 @@ Status check_entries(const Registry<Plugin>& staged, const Registry<Plugin>& hos
   return {};
 }
 
-Status load_plugin(const std::string& path, Registries& registries, PluginOrigins& origins) {
-  // RTLD_NOW: an unresolved symbol is an error here, not a crash in the middle of a run. Relative
-  // paths are made explicit so that dlopen never searches the library path for them.
-  const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
-  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
-  if (handle == nullptr) {
-    const char* why = dlerror();
-    return Error{"plugin " + path + ": cannot load: " + std::string(why != nullptr ? why : "unknown error")};
-  }
+/// Error when `staged` holds one name twice (a release build's `add` does not stop that).
+template <class Plugin>
+Status check_unique(const Registry<Plugin>& staged, const std::string& path) {
+  std::vector<std::string> names = staged.names();
+  std::sort(names.begin(), names.end());
+  const auto twice = std::adjacent_find(names.begin(), names.end());
+  if (twice == names.end()) return {};
+  return Error{"plugin " + path + ": registers " + std::string(plugin_kind<Plugin>) + " '" + *twice + "' twice"};
+}
+
+/// Checks the plugin at `handle` and adds what it registers; `path` names it in messages.
+Status register_plugin(void* handle, const std::string& path, Registries& registries, PluginOrigins& origins) {
   using Entry = const ShatterbenchPluginV1* (*)();
   void* symbol = dlsym(handle, SHATTERBENCH_PLUGIN_ENTRY);
   if (symbol == nullptr)
@@ -67,6 +70,10 @@ Status load_plugin(const std::string& path, Registries& registries, PluginOrigin
   if (d->cxx_abi != __GXX_ABI_VERSION)
     return Error{"plugin " + path + ": built with C++ ABI " + std::to_string(d->cxx_abi) + ", this is " +
                  std::to_string(__GXX_ABI_VERSION)};
+  if (d->layout != shatterbench_plugin_layout())
+    return Error{"plugin " + path + ": built with other shatterbench headers or another standard library ABI "
+                 "(layout " + std::to_string(d->layout) + ", this is " + std::to_string(shatterbench_plugin_layout()) +
+                 "): rebuild it against this installation"};
   Registries staged;
   try {
     d->register_plugins(staged);
@@ -75,6 +82,8 @@ Status load_plugin(const std::string& path, Registries& registries, PluginOrigin
   } catch (...) {
     return Error{"plugin " + path + ": registration threw a non-standard exception"};
   }
+  if (Status s = check_unique(staged.fracturers, path); !s) return s;
+  if (Status s = check_unique(staged.stress_models, path); !s) return s;
   if (Status s = check_entries(staged.fracturers, registries.fracturers, origins, path); !s) return s;
   if (Status s = check_entries(staged.stress_models, registries.stress_models, origins, path); !s) return s;
   loaded_files().push_back(path);
@@ -83,6 +92,22 @@ Status load_plugin(const std::string& path, Registries& registries, PluginOrigin
   registries.fracturers.absorb(std::move(staged.fracturers));
   registries.stress_models.absorb(std::move(staged.stress_models));
   return {};
+}
+
+Status load_plugin(const std::string& path, Registries& registries, PluginOrigins& origins) {
+  // RTLD_NOW: an unresolved symbol is an error here, not a crash in the middle of a run. Relative
+  // paths are made explicit so that dlopen never searches the library path for them.
+  const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+  void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
+  if (handle == nullptr) {
+    const char* why = dlerror();
+    return Error{"plugin " + path + ": cannot load: " + std::string(why != nullptr ? why : "unknown error")};
+  }
+  Status s = register_plugin(handle, path, registries, origins);
+  // A refused plugin is unloaded (its staged entries, whose code it holds, are gone by now); an
+  // accepted one stays loaded for the life of the process.
+  if (!s) dlclose(handle);
+  return s;
 }
 
 }  // namespace
@@ -104,8 +129,11 @@ Result<std::vector<std::string>> plugin_path_files(const std::string& variable) 
       continue;
     }
     std::vector<std::string> in_folder;
-    for (const fs::directory_entry& e : fs::directory_iterator(entry, ec))
-      if (e.path().extension() == ".so" && e.is_regular_file(ec)) in_folder.push_back(e.path().string());
+    fs::directory_iterator it(entry, ec);
+    for (; !ec && it != fs::directory_iterator(); it.increment(ec)) {
+      std::error_code file_ec;  // a file that cannot be stat'ed (a dangling link) is skipped
+      if (it->path().extension() == ".so" && it->is_regular_file(file_ec)) in_folder.push_back(it->path().string());
+    }
     if (ec) return Error{"SHATTERBENCH_PLUGIN_PATH: cannot read " + entry + ": " + ec.message()};
     std::sort(in_folder.begin(), in_folder.end());
     files.insert(files.end(), in_folder.begin(), in_folder.end());

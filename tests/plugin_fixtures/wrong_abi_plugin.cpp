@@ -12,6 +12,6 @@ void register_nothing(shatter::Registries&) { std::abort(); }  // never called
 }  // namespace
 
 extern "C" __attribute__((visibility("default"))) const ShatterbenchPluginV1* shatterbench_plugin_v1() {
-  static const ShatterbenchPluginV1 descriptor{999, "9.9.0", __GXX_ABI_VERSION, &register_nothing};
+  static const ShatterbenchPluginV1 descriptor{999, "9.9.0", __GXX_ABI_VERSION, &register_nothing, 0};
   return &descriptor;
 }
