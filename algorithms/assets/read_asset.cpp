@@ -116,12 +116,51 @@ std::string gltf_bounds_problem(const nlohmann::json& doc) {
   return {};
 }
 
+/// Why one primitive of a glTF mesh must not reach assimp (empty when it may): its mode must be one
+/// of the specification's seven, and its vertex count (the index accessor's count, else the POSITION
+/// accessor's, 0 without one) must make whole primitives of that mode. assimp 5.2 allocates
+/// count - 2 faces for a strip or fan and count - 1 for a line strip in unsigned arithmetic, then
+/// writes the first face: fewer vertices than one primitive is a 64 GB request or a write past the
+/// end. A LINE_LOOP (mode 2) is refused whatever its count: assimp dereferences a null face while it
+/// converts one whose first segment it skipped (line primitives would be dropped anyway).
+std::string gltf_primitive_problem(const nlohmann::json& doc, const nlohmann::json& primitive) {
+  const std::int64_t mode = member(primitive, "mode", 4);
+  if (mode < 0 || mode > 6) return "has no valid mode (expected 0 to 6)";
+  if (mode == 2)
+    return "is a line loop (mode 2), which assimp cannot import safely; line primitives are not kept: remove it";
+  const nlohmann::json* accessors = doc.contains("accessors") && doc["accessors"].is_array() ? &doc["accessors"] : nullptr;
+  const auto count_of = [&](const nlohmann::json& reference) -> std::int64_t {
+    const std::int64_t a = reference.is_number_unsigned() ? static_cast<std::int64_t>(reference.get<std::uint64_t>()) : -1;
+    if (accessors == nullptr || a < 0 || a >= static_cast<std::int64_t>(accessors->size()) || !(*accessors)[a].is_object())
+      return -1;
+    return member((*accessors)[a], "count", -1);
+  };
+  std::int64_t count = 0;
+  const char* counted = "POSITION";
+  if (primitive.contains("indices")) {
+    count = count_of(primitive["indices"]);
+    counted = "index";
+    if (count < 0) return "names no valid index accessor";
+  } else if (primitive.contains("attributes") && primitive["attributes"].is_object() &&
+             primitive["attributes"].contains("POSITION")) {
+    count = count_of(primitive["attributes"]["POSITION"]);
+    if (count < 0) return "names no valid POSITION accessor";
+  }
+  static constexpr const char* kModes[] = {"points", "lines", "line loop", "line strip", "triangles", "triangle strip", "triangle fan"};
+  static constexpr std::int64_t kMinimum[] = {0, 0, 2, 2, 0, 3, 3};
+  static constexpr std::int64_t kMultiple[] = {1, 2, 1, 1, 3, 1, 1};
+  const std::string what = std::string("is ") + kModes[mode] + " (mode " + std::to_string(mode) + ") with " +
+                           std::to_string(count) + " " + counted + " entries";
+  if (count < kMinimum[mode]) return what + " (it needs at least " + std::to_string(kMinimum[mode]) + ")";
+  if (count % kMultiple[mode] != 0) return what + " (it needs a multiple of " + std::to_string(kMultiple[mode]) + ")";
+  return {};
+}
+
 /// Why assimp must not be given this glTF JSON (empty when it may). JSON that does not parse as the
 /// glTF specification requires (UTF-8 included) is refused: assimp 5.2 crashes on some of it (a
 /// string that is not UTF-8 in an image's mimeType). So is data outside its bounds
-/// (gltf_bounds_problem), an image MIME type without '/' (assimp reads past it), and a LINE_LOOP primitive (mode 2): assimp
-/// dereferences a null face while it converts one whose first segment it skipped (line primitives
-/// would be dropped anyway).
+/// (gltf_bounds_problem), an image MIME type without '/' (assimp reads past it), and a primitive
+/// that assimp cannot convert safely (gltf_primitive_problem).
 std::string gltf_json_problem(std::string_view text) {
   nlohmann::json doc;
   try {
@@ -144,10 +183,11 @@ std::string gltf_json_problem(std::string_view text) {
   for (std::size_t m = 0; m < meshes.size(); ++m) {
     if (!meshes[m].is_object() || !meshes[m].contains("primitives") || !meshes[m]["primitives"].is_array()) continue;
     const nlohmann::json& primitives = meshes[m]["primitives"];
-    for (std::size_t p = 0; p < primitives.size(); ++p)
-      if (primitives[p].is_object() && primitives[p].contains("mode") && primitives[p]["mode"] == 2)
-        return "mesh " + std::to_string(m) + " primitive " + std::to_string(p) +
-               " is a line loop (mode 2), which assimp cannot import safely; line primitives are not kept: remove it";
+    for (std::size_t p = 0; p < primitives.size(); ++p) {
+      if (!primitives[p].is_object()) continue;
+      const std::string problem = gltf_primitive_problem(doc, primitives[p]);
+      if (!problem.empty()) return "mesh " + std::to_string(m) + " primitive " + std::to_string(p) + " " + problem;
+    }
   }
   return {};
 }

@@ -125,6 +125,24 @@ TEST_CASE("read_asset: glTF that assimp would crash on or read past is refused b
   CHECK_THAT(one_line_error(edited("utf8", "\"image/png\"", "\"\x9f\x98\x9a\xc8" "a/png\"")), Contains("does not parse"));
   CHECK_THAT(one_line_error(edited("bounds", "\"byteOffset\":288", "\"byteOffset\":289")),
              Contains("accessor 2 ends past its buffer view"));
+  // Too few entries for one primitive of the mode: assimp 5.2 computes count - 2 (strip, fan) or
+  // count - 1 (line strip) faces in unsigned arithmetic and writes the first of them.
+  const auto mode_count = [&](const std::string& name, char mode, const std::string& count) {
+    const fs::path mode_edited = edited(name, "\"mode\":4", std::string("\"mode\":") + mode);
+    std::string bytes = bytes_of(mode_edited);
+    const std::string from = "\"count\":36,", to = "\"count\":" + count + std::string(2 - count.size(), ' ') + ",";
+    bytes.replace(bytes.find(from), from.size(), to);
+    std::ofstream(mode_edited, std::ios::binary | std::ios::trunc) << bytes;
+    return one_line_error(mode_edited);
+  };
+  CHECK_THAT(mode_count("strip", '5', "1"), Contains("mesh 0 primitive 0 is triangle strip (mode 5) with 1 index entries") &&
+                                                 Contains("at least 3"));
+  CHECK_THAT(mode_count("fan", '6', "2"), Contains("triangle fan") && Contains("at least 3"));
+  CHECK_THAT(mode_count("line_strip", '3', "0"), Contains("line strip") && Contains("at least 2"));
+  CHECK_THAT(mode_count("lines", '1', "1"), Contains("lines (mode 1) with 1 index") && Contains("multiple of 2"));
+  CHECK_THAT(mode_count("triangles", '4', "35"), Contains("multiple of 3"));
+  CHECK_THAT(one_line_error(edited("mode", "\"mode\":4", "\"mode\":9")), Contains("no valid mode"));
+  CHECK_THAT(one_line_error(edited("indices", "\"indices\":0", "\"indices\":7")), Contains("no valid index accessor"));
   std::string chunk = box;
   chunk[15] = '\x0d';  // the JSON chunk claims 200 MB
   std::ofstream(dir / "chunk.glb", std::ios::binary) << chunk;
