@@ -28,12 +28,27 @@ class Registry {
   /// Creates a plugin from its settings (empty: every default); an error names the bad key.
   using Factory = std::function<Result<std::unique_ptr<Plugin>>(const PluginSettings&)>;
 
-  /// Adds a plugin with its documented settings; asserts that the name is new and the description
-  /// one line.
+  /// Adds a plugin with its documented settings. `add` never stops the program (it runs inside
+  /// plugins, whatever their build): a name taken twice, a name with white space or a description of
+  /// more than one line is reported by `problem`, which the plugin loader and run_cli check.
   void add(std::string name, std::string description, std::vector<SettingDoc> settings, Factory factory) {
-    assert(description.find('\n') == std::string::npos);
-    for ([[maybe_unused]] const Entry& e : entries_) assert(e.name != name && "plugin registered twice");
     entries_.push_back({std::move(name), std::move(description), std::move(settings), std::move(factory)});
+  }
+
+  /// The first entry that breaks the registry's rules, as "<kind> '<name>' <what>" (empty when none):
+  /// names unique, not empty and without white space; descriptions one line.
+  [[nodiscard]] std::string problem() const {
+    const std::string kind(plugin_kind<Plugin>);
+    for (std::size_t i = 0; i < entries_.size(); ++i) {
+      const Entry& e = entries_[i];
+      if (e.name.empty() || e.name.find_first_of(" \t\r\n") != std::string::npos)
+        return kind + " name '" + e.name + "' is empty or holds white space";
+      if (e.description.find_first_of("\r\n") != std::string::npos)
+        return kind + " '" + e.name + "' has a description of more than one line";
+      for (std::size_t j = 0; j < i; ++j)
+        if (entries_[j].name == e.name) return kind + " '" + e.name + "' is registered twice";
+    }
+    return {};
   }
 
   /// Creates the named plugin from `settings`, or an error that lists the known names (unknown name)

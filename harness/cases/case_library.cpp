@@ -27,6 +27,9 @@ std::vector<fs::path> candidate_dirs() {
     dirs.push_back((exe.parent_path() / ".." / "share" / "shatterbench" / "cases").lexically_normal());  // installed
     dirs.push_back((exe.parent_path() / ".." / ".." / "cases").lexically_normal());                  // build/bin
   }
+#ifdef SHATTER_INSTALLED_CASE_DIR
+  dirs.emplace_back(SHATTER_INSTALLED_CASE_DIR);
+#endif
 #ifdef SHATTER_SOURCE_DIR
   dirs.push_back(fs::path(SHATTER_SOURCE_DIR) / "cases");
 #endif

@@ -1,8 +1,11 @@
 #pragma once
 /// The built-in cases (cases/*.json) by name, and case lookup for the CLI: `--case FILE|NAME`.
 ///
-/// Search order for a name: `$SHATTER_CASE_DIR`, `<folder of the running executable>/../../cases`
-/// (the binary is build/bin/shatterbench), `SHATTER_SOURCE_DIR/cases` when the build defines that
+/// Search order for a name: `$SHATTER_CASE_DIR`, `<folder of the running executable>/../share/
+/// shatterbench/cases` (an installed shatterbench), `<folder of the running executable>/../../cases`
+/// (the binary is build/bin/shatterbench), the install prefix's case folder as configured
+/// (SHATTER_INSTALLED_CASE_DIR: a program of a user's own, linked with the installed harness, finds
+/// the installed cases wherever it runs), `SHATTER_SOURCE_DIR/cases` when the build defines that
 /// macro, and last `cases/` under the current directory. The first folder holding `<name>.json` wins.
 
 #include "algorithms/core/result.h"

@@ -3,6 +3,7 @@
 /// it runs: 0 ok, 1 a gate failed, 2 bad input or usage (with one line on stderr).
 
 #include "algorithms/registry/registries.h"
+#include "harness/plugins/plugin_loader.h"
 
 #include <CLI/CLI.hpp>
 
@@ -32,8 +33,8 @@ void add_cap_uv_scale_option(CLI::App* cmd, double& out);
 
 /// Commands that create plugins take the registries they look them up in (kept by reference: they
 /// must outlive the app's parse).
-/// `shatterbench list`.
-void add_list_command(CLI::App& app, int& exit_code, const Registries& registries);
+/// `shatterbench list`: each name a plugin added (a key of `origins`) names the plugin's file.
+void add_list_command(CLI::App& app, int& exit_code, const Registries& registries, const PluginOrigins& origins);
 /// `shatterbench fracture`.
 void add_fracture_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench stress`.

@@ -57,10 +57,19 @@ PluginArguments take_plugin_arguments(int argc, char** argv) {
   return out;
 }
 
+/// A run's registries: the program's own and the plugins', with where each plugin's names came from.
+struct LoadedRegistries {
+  Registries registries;
+  PluginOrigins origins;
+};
+
 /// `registries` with the plugins of SHATTERBENCH_PLUGIN_PATH and of `flags` (in that order) added.
 /// The plugins loaded are left in SHATTERBENCH_PLUGIN_PATH, so a child this process runs (the
 /// callgrind re-run of `grid --metric instructions`) loads the same ones.
-Result<Registries> with_plugins(const Registries& registries, const std::vector<std::string>& flags) {
+Result<LoadedRegistries> with_plugins(const Registries& registries, const std::vector<std::string>& flags) {
+  // The program's own registrations keep the rules a plugin's must (Registry::problem).
+  if (std::string problem = registries.fracturers.problem(); !problem.empty()) return Error{"registry: " + problem};
+  if (std::string problem = registries.stress_models.problem(); !problem.empty()) return Error{"registry: " + problem};
   std::vector<std::string> paths;
   const char* variable = std::getenv("SHATTERBENCH_PLUGIN_PATH");
   if (variable != nullptr) {
@@ -68,16 +77,15 @@ Result<Registries> with_plugins(const Registries& registries, const std::vector<
     if (!listed) return listed.error();
     paths = *listed;
   }
-  if (paths.empty() && flags.empty()) return registries;
+  LoadedRegistries all{registries, {}};
+  if (paths.empty() && flags.empty()) return all;
   std::string joined;
   for (const std::string& flag : flags) {
     if (flag.find(':') != std::string::npos)
       return Error{"--plugin " + flag + ": a plugin path may not hold ':' (the separator of SHATTERBENCH_PLUGIN_PATH)"};
     paths.push_back(flag);
   }
-  Registries all = registries;
-  PluginOrigins origins;
-  if (Status s = load_plugins(paths, all, origins); !s) return s.error();
+  if (Status s = load_plugins(paths, all.registries, all.origins); !s) return s.error();
   if (!flags.empty()) {
     for (const std::string& path : paths) joined += (joined.empty() ? "" : ":") + path;
     ::setenv("SHATTERBENCH_PLUGIN_PATH", joined.c_str(), 1);
@@ -93,9 +101,9 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
   if (!arguments.error.empty()) return fail_input(arguments.error);
   argc = static_cast<int>(arguments.argv.size()) - 1;
   argv = arguments.argv.data();
-  Result<Registries> loaded = with_plugins(builtin, arguments.paths);
+  Result<LoadedRegistries> loaded = with_plugins(builtin, arguments.paths);
   if (!loaded) return fail_input(loaded.error().message);
-  const Registries& registries = *loaded;
+  const Registries& registries = loaded->registries;
   CLI::App app{"shatterbench: benchmark and regression harness for real-time destruction algorithms",
                "shatterbench"};
   app.require_subcommand(1);
@@ -105,7 +113,7 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
                  "Load a plugin library with more fracturers and stress models (repeatable; also the "
                  "':'-separated SHATTERBENCH_PLUGIN_PATH); docs/plugins.md");
   int exit_code = exit_ok;
-  add_list_command(app, exit_code, registries);
+  add_list_command(app, exit_code, registries, loaded->origins);
   add_fracture_command(app, exit_code, registries);
   add_stress_command(app, exit_code, registries);
   add_grid_command(app, exit_code, registries);

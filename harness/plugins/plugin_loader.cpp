@@ -26,31 +26,16 @@ std::string origin_of(const PluginOrigins& origins, const std::string& name) {
   return it == origins.end() ? std::string("built-in") : it->second;
 }
 
-/// Error unless every name of `staged` is free in `host` and every description one line.
+/// Error unless every name of `staged` is free in `host`.
 template <class Plugin>
 Status check_entries(const Registry<Plugin>& staged, const Registry<Plugin>& host, const PluginOrigins& origins,
                      const std::string& path) {
-  for (const std::string& name : staged.names()) {
-    const std::string kind(plugin_kind<Plugin>);
+  if (const std::string problem = staged.problem(); !problem.empty()) return Error{"plugin " + path + ": " + problem};
+  for (const std::string& name : staged.names())
     if (host.contains(name))
-      return Error{"plugin " + path + ": " + kind + " '" + name + "' is already registered by " +
+      return Error{"plugin " + path + ": " + std::string(plugin_kind<Plugin>) + " '" + name + "' is already registered by " +
                    origin_of(origins, name)};
-    if (name.empty() || name.find_first_of(" \t\r\n") != std::string::npos)
-      return Error{"plugin " + path + ": " + kind + " name '" + name + "' is empty or holds white space"};
-    if (staged.description(name).find('\n') != std::string::npos)
-      return Error{"plugin " + path + ": the description of " + kind + " '" + name + "' is more than one line"};
-  }
   return {};
-}
-
-/// Error when `staged` holds one name twice (a release build's `add` does not stop that).
-template <class Plugin>
-Status check_unique(const Registry<Plugin>& staged, const std::string& path) {
-  std::vector<std::string> names = staged.names();
-  std::sort(names.begin(), names.end());
-  const auto twice = std::adjacent_find(names.begin(), names.end());
-  if (twice == names.end()) return {};
-  return Error{"plugin " + path + ": registers " + std::string(plugin_kind<Plugin>) + " '" + *twice + "' twice"};
 }
 
 /// Checks the plugin at `handle` and adds what it registers; `path` names it in messages.
@@ -82,8 +67,6 @@ Status register_plugin(void* handle, const std::string& path, Registries& regist
   } catch (...) {
     return Error{"plugin " + path + ": registration threw a non-standard exception"};
   }
-  if (Status s = check_unique(staged.fracturers, path); !s) return s;
-  if (Status s = check_unique(staged.stress_models, path); !s) return s;
   if (Status s = check_entries(staged.fracturers, registries.fracturers, origins, path); !s) return s;
   if (Status s = check_entries(staged.stress_models, registries.stress_models, origins, path); !s) return s;
   loaded_files().push_back(path);

@@ -66,6 +66,12 @@ TEST_CASE("plugins: a plugin's fracturer and stress model are listed and fractur
   REQUIRE(list.exit_code == 0);
   CHECK_THAT(list.out, Catch::Contains("test-shards") && Catch::Contains("test-count") &&
                            Catch::Contains("plane-slice"));
+  // The plugin's two names say where they came from; the built-ins say nothing.
+  const std::string from = "\n    from plugin " + plugin("shards") + "\n";
+  std::size_t origins = 0;
+  for (std::size_t at = list.out.find(from); at != std::string::npos; at = list.out.find(from, at + 1)) ++origins;
+  CHECK(origins == 2);
+  CHECK(list.out.find("test-shards") < list.out.find(from));
   // Without the plugin the names are unknown.
   check_refused(test::run_cli_argv({"fracture", "--mesh", elephant(), "--algo", "test-shards"}), "test-shards");
 
@@ -121,6 +127,10 @@ TEST_CASE("plugins: refused with one line naming the plugin", "[plugins]") {
     const std::string path = plugin("shards");
     check_refused(test::run_cli_argv({"--plugin", path, "--plugin", path, "list"}), "already registered by " + path);
   }
+  SECTION("a name registered twice by one plugin built with assertions on") {
+    const std::string path = plugin("careless");
+    check_refused(test::run_cli_argv({"--plugin", path, "list"}), "plugin " + path + ": fracturer 'test-twice' is registered twice");
+  }
   SECTION("not a plugin, not a library, no path") {
     check_refused(test::run_cli_argv({"--plugin", SHATTER_CLI, "list"}), "cannot load");
     check_refused(test::run_cli_argv({"--plugin", "/nonexistent/x.so", "list"}), "cannot load");
@@ -151,5 +161,14 @@ TEST_CASE("plugins: a plugin that throws or crashes inside a fracture fails only
     const test::CliRun run = grid("test-crashes", true);
     CHECK(run.exit_code == 1);
     CHECK_THAT(run.out + run.err, Catch::Contains("crashed"));
+  }
+  SECTION("a crash, without --timeout: the run ends as a game would, and leaves no result behind") {
+    const fs::path json = fs::temp_directory_path() / ("shatter_plugin_crash_" + std::to_string(::getpid()) + ".json");
+    fs::remove(json);
+    std::vector<std::string> args = {"--plugin", faulty, "grid", "--fracturer", "test-crashes", "--json", json.string()};
+    args.insert(args.end(), cell.begin(), cell.end());
+    const test::CliRun run = test::run_cli_argv(args);
+    CHECK(run.exit_code != 0);  // killed by the signal (a sanitizer build reports it and exits 1)
+    CHECK_FALSE(fs::exists(json));
   }
 }
