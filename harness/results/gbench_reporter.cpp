@@ -15,14 +15,14 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr double kMicrosecondsPerMs = 1000.0;
+constexpr double kNanosecondsPerMs = 1e6;
 
-/// One figure of a cell over its repetitions: wall and CPU time per iteration (us), and counters.
+/// One figure of a cell over its repetitions: wall and CPU time per iteration (ns), and counters.
 struct Series {
   std::string name;
   int iterations = 1;
-  std::vector<double> real_us;
-  std::vector<double> cpu_us;
+  std::vector<double> real_ns;
+  std::vector<double> cpu_ns;
   std::vector<std::pair<std::string, std::vector<double>>> counters;
 };
 
@@ -51,8 +51,8 @@ class Writer {
 
   void add(const Series& s) {
     if (!aggregates_only_)
-      for (std::size_t k = 0; k < s.real_us.size(); ++k) {
-        Json b = entry(s.name, s.name, "iteration", s.iterations, s.real_us[k], s.cpu_us[k]);
+      for (std::size_t k = 0; k < s.real_ns.size(); ++k) {
+        Json b = entry(s.name, s.name, "iteration", s.iterations, s.real_ns[k], s.cpu_ns[k]);
         b["repetition_index"] = static_cast<int>(k);
         for (const auto& [counter, values] : s.counters) b[counter] = values[k];
         benchmarks_.push_back(std::move(b));
@@ -62,8 +62,8 @@ class Writer {
         {"mean", &mean_of}, {"median", [](const std::vector<double>& v) { return median_of(v); }},
         {"stddev", &stddev_of}, {"cv", &cv_of}};
     for (const auto& [aggregate, stat] : aggregates) {
-      Json b = entry(s.name + "_" + aggregate, s.name, "aggregate", static_cast<int>(s.real_us.size()),
-                     stat(s.real_us), stat(s.cpu_us));
+      Json b = entry(s.name + "_" + aggregate, s.name, "aggregate", static_cast<int>(s.real_ns.size()),
+                     stat(s.real_ns), stat(s.cpu_ns));
       b["aggregate_name"] = aggregate;
       b["aggregate_unit"] = std::string(aggregate) == "cv" ? "percentage" : "time";
       for (const auto& [counter, values] : s.counters) b[counter] = stat(values);
@@ -85,7 +85,7 @@ class Writer {
 
  private:
   Json entry(const std::string& name, const std::string& run_name, const char* run_type, int iterations,
-             double real_us, double cpu_us) const {
+             double real_ns, double cpu_ns) const {
     return Json{{"name", name},
                 {"family_index", family_},
                 {"per_family_instance_index", 0},
@@ -94,9 +94,9 @@ class Writer {
                 {"repetitions", repetitions_},
                 {"threads", 1},
                 {"iterations", iterations},
-                {"real_time", real_us},
-                {"cpu_time", cpu_us},
-                {"time_unit", "us"}};
+                {"real_time", real_ns},
+                {"cpu_time", cpu_ns},
+                {"time_unit", "ns"}};
   }
 
   int repetitions_;
@@ -119,8 +119,8 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
     }
     Series worst{prefix + "worst_frame", 1, {}, {}, {}};
     for (const GridSample& s : c.samples) {
-      worst.real_us.push_back(s.worst_frame_ms * kMicrosecondsPerMs);
-      worst.cpu_us.push_back(s.worst_frame_cpu_ms * kMicrosecondsPerMs);
+      worst.real_ns.push_back(s.worst_frame_ms * kNanosecondsPerMs);
+      worst.cpu_ns.push_back(s.worst_frame_cpu_ms * kNanosecondsPerMs);
     }
     for (const Figure& f : c.samples.front().figures.figures()) {
       if ((f.spec.outputs & kFigureInGbench) == 0) continue;
@@ -133,10 +133,10 @@ nlohmann::ordered_json grid_to_gbench_json(const GridResult& grid, const std::st
       const auto i = static_cast<std::size_t>(st);
       Series stage{prefix + std::string(stage_name(st)), grid.frames, {}, {}, {}};
       for (const GridSample& s : c.samples) {
-        stage.real_us.push_back(s.stages_ms[i] / frames * kMicrosecondsPerMs);
-        stage.cpu_us.push_back(s.stages_cpu_ms[i] / frames * kMicrosecondsPerMs);
+        stage.real_ns.push_back(s.stages_ms[i] / frames * kNanosecondsPerMs);
+        stage.cpu_ns.push_back(s.stages_cpu_ms[i] / frames * kNanosecondsPerMs);
       }
-      if (std::all_of(stage.real_us.begin(), stage.real_us.end(), [](double x) { return x == 0.0; })) continue;
+      if (std::all_of(stage.real_ns.begin(), stage.real_ns.end(), [](double x) { return x == 0.0; })) continue;
       writer.add(stage);
     }
   }

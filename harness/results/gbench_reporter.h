@@ -13,8 +13,9 @@
 ///     CPU clock. Stages that took no time in any repetition are left out.
 /// Each has one `run_type` "iteration" entry per repetition (`repetitions`, `repetition_index`) and the
 /// aggregates Google Benchmark writes for repetitions: `_mean`, `_median`, `_stddev` (time) and `_cv`
-/// (a ratio, `aggregate_unit` "percentage"). Times are in microseconds (`time_unit` "us"): compare.py
-/// prints times without decimals, so milliseconds would show a 2.6 ms frame as "3". With
+/// (a ratio, `aggregate_unit` "percentage"). Times are in nanoseconds (`time_unit` "ns", Google
+/// Benchmark's default): compare.py prints times without decimals, so milliseconds would show a
+/// 2.6 ms frame as "3" and microseconds a stage of 0.3 us per frame as "0". With
 /// `aggregates_only` (`--gbench-aggregates-only`) only the aggregates are written, as
 /// `--benchmark_report_aggregates_only` does. A failed cell (`grid --timeout`, a fracturer that threw)
 /// is one `worst_frame` entry with `error_occurred` true and `error_message` its reason. Each named

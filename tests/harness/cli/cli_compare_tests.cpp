@@ -114,7 +114,7 @@ TEST_CASE("cli: grid writes gbench JSON and JUnit, and shards refuse bad specs",
   CHECK(r.exit_code == 1);
   const auto g = nlohmann::json::parse(slurp(dir / "g.json"));
   CHECK(g.at("benchmarks")[0].at("name") == "building/10x5/worst_frame");
-  CHECK(g.at("benchmarks")[0].at("time_unit") == "us");
+  CHECK(g.at("benchmarks")[0].at("time_unit") == "ns");
   const std::string xml = slurp(dir / "g.xml");
   CHECK(xml.find("failures=\"1\"") != std::string::npos);
   CHECK(xml.find("<failure message=\"worst frame") != std::string::npos);
