@@ -51,5 +51,33 @@ void fem_lite_resolution(benchmark::State& state) {
 
 }  // namespace
 
+/// A compact piece as the runtime meets it: the column case's 0.5 m slab, free-floating (inertia
+/// relief), hit sideways (4000 N s, radius 0.4 m) near a top edge, into 25 fragments. Its cells grow as
+/// the cube of the resolution, and the time of the direct solve faster still (docs/fem-lite.md, "Cost
+/// at runtime").
+void fem_lite_compact(benchmark::State& state) {
+  FemLiteSettings settings;
+  settings.resolution = static_cast<int>(state.range(0));
+  const Mesh slab = make_box(Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 3.25));
+  FractureParams params;
+  params.fragments = 25;
+  params.seed = 3;
+  params.impact = Impact{Vec3(0.25, 0, 3.5), -Vec3::UnitX(), 4000.0, 0.4};
+  const FemLiteFracturer fem(settings);
+  Result<FemLiteAnalysis> analysis = fem.analyse(slab, params);
+  for (auto _ : state) {
+    analysis = fem.analyse(slab, params);
+    benchmark::DoNotOptimize(analysis);
+  }
+  if (!analysis) {
+    state.SkipWithError(analysis.error().message.c_str());
+    return;
+  }
+  state.counters["elements"] = analysis->elements;
+  state.counters["unknowns"] = analysis->solve.free_dofs;
+}
+
+BENCHMARK(fem_lite_compact)->Name("fem-lite/slab")->DenseRange(4, 12, 2)->Unit(benchmark::kMillisecond);
+
 BENCHMARK(fem_lite_resolution)->Name("fem-lite/beam")->Arg(4)->Arg(8)->Arg(12)->Arg(16)->Arg(24)->Arg(32)
     ->Unit(benchmark::kMillisecond);
