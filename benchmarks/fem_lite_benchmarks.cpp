@@ -1,4 +1,4 @@
-// Google Benchmark: fem-lite's resolution knob, time against crack-location error, on a simply
+// Google Benchmark: fem-lite's resolution knob and cell budget. fem-lite/beam: time against crack-location error, on a simply
 // supported beam [0,4] x [0,0.5] x [0,0.5] m (pinned bottom edges at both ends) hit downward at
 // mid-span (1000 N s at (2, 0.25, 0.5), 2 fragments). Counters: the first crack's location error
 // |x - 2| / 4 and its normal's angle to the beam axis (degrees).
@@ -78,6 +78,42 @@ void fem_lite_compact(benchmark::State& state) {
 }
 
 BENCHMARK(fem_lite_compact)->Name("fem-lite/slab")->DenseRange(4, 12, 2)->Unit(benchmark::kMillisecond);
+
+/// The same slab under a cell budget (max_cells, resolution 16): time, the resolution it came down to,
+/// and what the budget moved against the solve without one (resolution 16, 4,096 cells): the first
+/// crack plane's normal (degrees) and its offset along the reference normal (m), and the largest
+/// principal stress (relative).
+void fem_lite_budget(benchmark::State& state) {
+  const Mesh slab = make_box(Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 3.25));
+  FractureParams params;
+  params.fragments = 25;
+  params.seed = 3;
+  params.impact = Impact{Vec3(0.25, 0, 3.5), -Vec3::UnitX(), 4000.0, 0.4};
+  static const Result<FemLiteAnalysis> reference = FemLiteFracturer().analyse(slab, params);
+  FemLiteSettings settings;
+  settings.max_cells = static_cast<int>(state.range(0));
+  const FemLiteFracturer fem(settings);
+  Result<FemLiteAnalysis> analysis = fem.analyse(slab, params);
+  for (auto _ : state) {
+    analysis = fem.analyse(slab, params);
+    benchmark::DoNotOptimize(analysis);
+  }
+  if (!analysis || !reference || analysis->planes.empty() || reference->planes.empty()) {
+    state.SkipWithError("fem-lite failed or found no crack plane");
+    return;
+  }
+  const Plane& a = analysis->planes.front();
+  const Plane& r = reference->planes.front();
+  const Vec3 n = r.normal.normalized();
+  state.counters["resolution"] = analysis->resolution;
+  state.counters["elements"] = analysis->elements;
+  state.counters["first_plane_angle_deg"] = std::acos(std::min(1.0, std::abs(a.normal.normalized().dot(n)))) * 180.0 / M_PI;
+  state.counters["first_plane_offset_m"] = std::abs((a.point - r.point).dot(n));
+  state.counters["max_principal_rel"] = std::abs(analysis->max_principal - reference->max_principal) / reference->max_principal;
+}
+
+BENCHMARK(fem_lite_budget)->Name("fem-lite/slab-budget")->Arg(125)->Arg(216)->Arg(512)->Arg(1000)
+    ->Unit(benchmark::kMillisecond);
 
 BENCHMARK(fem_lite_resolution)->Name("fem-lite/beam")->Arg(4)->Arg(8)->Arg(12)->Arg(16)->Arg(24)->Arg(32)
     ->Unit(benchmark::kMillisecond);

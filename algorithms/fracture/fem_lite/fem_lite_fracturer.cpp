@@ -21,12 +21,15 @@ Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const Fract
     analysis.fragments = 1;
     return analysis;
   }
-  const HexGrid grid = build_hex_grid(solid, settings_.resolution);
+  analysis.resolution = budgeted_resolution(solid, settings_.resolution, settings_.max_cells);
+  const HexGrid grid = build_hex_grid(solid, analysis.resolution);
   analysis.elements = static_cast<int>(grid.elements.size());
   analysis.nodes = static_cast<int>(grid.nodes.size());
   if (grid.elements.empty())
     return Error{"fem-lite: no grid cell centre lies inside the solid at resolution " +
-                 std::to_string(settings_.resolution) + " (raise the resolution)"};
+                 std::to_string(analysis.resolution) +
+                 (analysis.resolution < settings_.resolution ? " (lowered to fit max_cells; raise max_cells)"
+                                                             : " (raise the resolution)")};
   Result<FemLoads> loads = fem_loads(grid, settings_, params.impact);
   if (!loads) return loads.error();
   analysis.inertia_relief = loads->inertia_relief;
@@ -71,6 +74,8 @@ Result<std::optional<CutPlan>> FemLiteFracturer::cut_plan(const Mesh& solid, con
 std::vector<SettingDoc> fem_lite_setting_docs() {
   return {{"resolution", "cells", "16", "[2, " + std::to_string(kFemLiteMaxResolution) + "]",
            "grid cells along the longest axis of the solid's box", {8, 16, 32}},
+          {"max_cells", "cells", "0", "[0, " + std::to_string(kFemLiteMaxCells) + "]",
+           "most grid cells over the solid's box; the resolution is lowered to fit (0: no budget)", {}},
           {"contact_time", "s", "0.0166667", "(0, 1e6]", "contact time of the impact: force = impulse / time", {}},
           {"crack_spacing", "cells", "1", "[0, 1e6]", "least distance of a new crack from an earlier plane", {}},
           {"min_piece_share", "", "0.01", "[0, 0.99]", "least piece a crack may cut off, share of the mean", {}}};
@@ -82,6 +87,7 @@ Result<FemLiteSettings> read_fem_lite_settings(const PluginSettings& settings) {
   FemLiteSettings f;
   if (Status s = r.check_keys(); !s) return s.error();
   if (Status s = r.integer("resolution", 2, kFemLiteMaxResolution, f.resolution); !s) return s.error();
+  if (Status s = r.integer("max_cells", 0, kFemLiteMaxCells, f.max_cells); !s) return s.error();
   if (Status s = r.number_above("contact_time", 0.0, 1e6, f.contact_time); !s) return s.error();
   if (Status s = r.number("crack_spacing", 0.0, 1e6, f.crack_spacing); !s) return s.error();
   if (Status s = r.number("min_piece_share", 0.0, 0.99, f.min_piece_share); !s) return s.error();

@@ -11,6 +11,9 @@ Status check_fem_lite_settings(const FemLiteSettings& settings) {
   if (settings.resolution < 2 || settings.resolution > kFemLiteMaxResolution)
     return Error{"fem-lite: resolution must be in [2, " + std::to_string(kFemLiteMaxResolution) + "], got " +
                  std::to_string(settings.resolution)};
+  if (settings.max_cells < 0 || settings.max_cells > kFemLiteMaxCells)
+    return Error{"fem-lite: max_cells must be in [0, " + std::to_string(kFemLiteMaxCells) + "], got " +
+                 std::to_string(settings.max_cells)};
   if (Status s = check_material(settings.material); !s) return Error{"fem-lite: " + s.error().message};
   if (!settings.gravity.allFinite()) return Error{"fem-lite: gravity must be finite"};
   for (std::size_t i = 0; i < settings.supports.size(); ++i) {

@@ -11,6 +11,8 @@ namespace shatter {
 
 /// The largest resolution fem-lite accepts (memory of the direct solve grows about as resolution^4).
 inline constexpr int kFemLiteMaxResolution = 128;
+/// The largest cell budget fem-lite accepts: the cells of the finest grid.
+inline constexpr int kFemLiteMaxCells = kFemLiteMaxResolution * kFemLiteMaxResolution * kFemLiteMaxResolution;
 
 /// Settings of the fem-lite fracturer (plain data; every field has a default).
 struct FemLiteSettings {
@@ -18,6 +20,12 @@ struct FemLiteSettings {
   /// default 16. The other axes get the nearest whole number of cells of the same size, at least 2.
   /// The knob that trades time for accuracy.
   int resolution = 16;
+  /// The most cells the grid over the solid's bounding box may have, in [0, kFemLiteMaxCells]; 0 (the
+  /// default) sets no budget. With a budget the resolution is lowered, one step at a time, until the
+  /// grid fits (never below 2): a compact piece, whose cells grow as the cube of the resolution, then
+  /// costs at most the budget's solve, while a long thin one keeps its resolution. An approximation
+  /// beyond `resolution`'s: a named option, off by default (docs/fem-lite.md, "Cost at runtime").
+  int max_cells = 0;
   /// Elastic constants and strengths (default: concrete).
   Material material;
   /// Gravitational acceleration, m/s^2, world frame; default none.

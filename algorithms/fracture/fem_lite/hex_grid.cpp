@@ -7,6 +7,25 @@
 
 namespace shatter {
 
+std::array<int, 3> hex_grid_counts(const Vec3& extent, int resolution) {
+  const double target = extent.maxCoeff() / resolution;  // m, the nominal cell size
+  std::array<int, 3> counts{};
+  for (int a = 0; a < 3; ++a) counts[a] = std::max(2, static_cast<int>(std::lround(extent[a] / target)));
+  return counts;
+}
+
+int budgeted_resolution(const Mesh& solid, int resolution, int max_cells) {
+  if (max_cells <= 0) return resolution;
+  const Aabb box = bounding_box(solid);
+  const Vec3 extent = box.max - box.min;
+  if (!(extent.maxCoeff() > 0.0)) return resolution;
+  for (int r = resolution; r > 2; --r) {
+    const std::array<int, 3> n = hex_grid_counts(extent, r);
+    if (static_cast<std::int64_t>(n[0]) * n[1] * n[2] <= max_cells) return r;
+  }
+  return 2;
+}
+
 HexGrid build_hex_grid(const Mesh& solid, int resolution) {
   HexGrid grid;
   const Aabb box = bounding_box(solid);
@@ -14,10 +33,8 @@ HexGrid build_hex_grid(const Mesh& solid, int resolution) {
   const double longest = extent.maxCoeff();
   if (!(longest > 0.0)) return grid;
   const double target = longest / resolution;  // m, the nominal cell size
-  for (int a = 0; a < 3; ++a) {
-    grid.counts[a] = std::max(2, static_cast<int>(std::lround(extent[a] / target)));
-    grid.cell[a] = extent[a] > 0.0 ? extent[a] / grid.counts[a] : target;
-  }
+  grid.counts = hex_grid_counts(extent, resolution);
+  for (int a = 0; a < 3; ++a) grid.cell[a] = extent[a] > 0.0 ? extent[a] / grid.counts[a] : target;
   grid.origin = box.min;
 
   const auto [nx, ny, nz] = grid.counts;

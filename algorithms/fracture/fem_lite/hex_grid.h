@@ -34,6 +34,14 @@ struct HexGrid {
   [[nodiscard]] double cell_volume() const { return cell.prod(); }
 };
 
+/// The cells along x, y, z of the grid over a box of `extent` (m, longest side > 0) at `resolution`
+/// (>= 2): the nearest whole number of cells of the nominal size longest / resolution, at least 2.
+std::array<int, 3> hex_grid_counts(const Vec3& extent, int resolution);
+
+/// The largest resolution in [2, `resolution`] whose grid over `solid`'s bounding box has at most
+/// `max_cells` cells (`resolution` itself when max_cells is 0, or when it fits; 2 when nothing fits).
+int budgeted_resolution(const Mesh& solid, int resolution, int max_cells);
+
 /// Builds the grid over closed, outward `solid` with `resolution` (>= 2) cells along the longest axis
 /// of its bounding box. Elements and nodes are numbered component by component (components in the
 /// order of their first cell), in x-fastest grid order within one. A solid thinner than a cell can

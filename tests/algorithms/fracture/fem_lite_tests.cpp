@@ -7,6 +7,7 @@
 #include "algorithms/core/primitives.h"
 #include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
 #include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
+#include "algorithms/fracture/fem_lite/hex_grid.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "tests/support/mesh_fixtures.h"
@@ -182,6 +183,12 @@ TEST_CASE("fem-lite: bad settings and parameters are errors, not crashes", "[fem
   s.crack_spacing = -1;
   CHECK(fails(s));
   s = {};
+  s.max_cells = -1;
+  CHECK(fails(s));
+  s = {};
+  s.max_cells = kFemLiteMaxCells + 1;
+  CHECK(fails(s));
+  s = {};
   s.supports = {region(Vec3(10, 10, 10), Vec3(11, 11, 11))};  // holds no node
   CHECK(fails(s));
   s = {};
@@ -190,6 +197,51 @@ TEST_CASE("fem-lite: bad settings and parameters are errors, not crashes", "[fem
   FractureParams bad = params;
   bad.fragments = 0;
   CHECK_FALSE(FemLiteFracturer().fracture(beam, bad).ok());
+}
+
+TEST_CASE("fem-lite: max_cells lowers the resolution of a compact piece to fit, and leaves a long one alone",
+          "[fem-lite]") {
+  // A cube's grid has r^3 cells at resolution r: the largest r with r^3 <= budget.
+  const Mesh slab = make_box(Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 3.25));
+  CHECK(budgeted_resolution(slab, 16, 0) == 16);     // no budget
+  CHECK(budgeted_resolution(slab, 16, 4096) == 16);  // 16^3 fits
+  CHECK(budgeted_resolution(slab, 16, 4095) == 15);
+  CHECK(budgeted_resolution(slab, 16, 216) == 6);
+  CHECK(budgeted_resolution(slab, 16, 215) == 5);
+  CHECK(budgeted_resolution(slab, 16, 7) == 2);  // never below 2 (8 cells)
+  // The beam's grid at 16 is 16 x 2 x 2; at 15 it is 15 x 2 x 2 (0.5 m / (4/15) m rounds to 2).
+  const Mesh beam = make_beam();
+  CHECK(budgeted_resolution(beam, 16, 64) == 16);
+  CHECK(budgeted_resolution(beam, 16, 63) == 15);
+
+  FractureParams hit;
+  hit.fragments = 25;
+  hit.seed = 3;
+  hit.impact = Impact{Vec3(0.25, 0, 3.5), -Vec3::UnitX(), 4000.0, 0.4};
+  FemLiteSettings budget;
+  budget.max_cells = 216;
+  const Result<FemLiteAnalysis> a = FemLiteFracturer(budget).analyse(slab, hit);
+  REQUIRE(a);
+  CHECK(a->resolution == 6);
+  CHECK(a->elements == 216);  // every cell of a box is inside it
+  CHECK(a->solve.residual < 1e-10);
+  const Result<std::vector<Fragment>> fragments = FemLiteFracturer(budget).fracture(slab, hit);
+  REQUIRE(fragments);
+  require_valid_fracture(slab, *fragments, 25);
+
+  // A budget the long beam fits leaves its analysis exactly as without one.
+  FemLiteSettings beam_budget = simply_supported(16);
+  beam_budget.max_cells = 216;
+  const Result<FemLiteAnalysis> with = FemLiteFracturer(beam_budget).analyse(beam, downward_hit(Vec3(2, 0.25, 0.5), 2));
+  const Result<FemLiteAnalysis> without = FemLiteFracturer(simply_supported(16)).analyse(beam, downward_hit(Vec3(2, 0.25, 0.5), 2));
+  REQUIRE(with);
+  REQUIRE(without);
+  CHECK(with->resolution == 16);
+  REQUIRE(with->planes.size() == without->planes.size());
+  for (std::size_t i = 0; i < with->planes.size(); ++i) {
+    CHECK(with->planes[i].point == without->planes[i].point);
+    CHECK(with->planes[i].normal == without->planes[i].normal);
+  }
 }
 
 TEST_CASE("fem-lite vs cgal-clip: its crack planes replayed exactly give the same fragments", "[fem-lite][cgal-clip]") {
