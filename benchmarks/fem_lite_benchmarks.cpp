@@ -52,17 +52,25 @@ void fem_lite_resolution(benchmark::State& state) {
 }  // namespace
 
 /// A compact piece as the runtime meets it: the column case's 0.5 m slab, free-floating (inertia
-/// relief), hit sideways (4000 N s, radius 0.4 m) near a top edge, into 25 fragments. Its cells grow as
-/// the cube of the resolution, and the time of the direct solve faster still (docs/fem-lite.md, "Cost
-/// at runtime").
-void fem_lite_compact(benchmark::State& state) {
-  FemLiteSettings settings;
-  settings.resolution = static_cast<int>(state.range(0));
-  const Mesh slab = make_box(Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 3.25));
+/// relief).
+Mesh column_slab() { return make_box(Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 3.25)); }
+
+/// The column's hit on its slab: sideways (4000 N s, radius 0.4 m) near a top edge, into 25 fragments.
+FractureParams sideways_hit() {
   FractureParams params;
   params.fragments = 25;
   params.seed = 3;
   params.impact = Impact{Vec3(0.25, 0, 3.5), -Vec3::UnitX(), 4000.0, 0.4};
+  return params;
+}
+
+/// The slab at a resolution: its cells grow as the cube of the resolution, and the time of the direct
+/// solve faster still (docs/fem-lite.md, "Cost at runtime").
+void fem_lite_compact(benchmark::State& state) {
+  FemLiteSettings settings;
+  settings.resolution = static_cast<int>(state.range(0));
+  const Mesh slab = column_slab();
+  const FractureParams params = sideways_hit();
   const FemLiteFracturer fem(settings);
   Result<FemLiteAnalysis> analysis = fem.analyse(slab, params);
   for (auto _ : state) {
@@ -84,11 +92,8 @@ BENCHMARK(fem_lite_compact)->Name("fem-lite/slab")->DenseRange(4, 12, 2)->Unit(b
 /// crack plane's normal (degrees) and its offset along the reference normal (m), and the largest
 /// principal stress (relative).
 void fem_lite_budget(benchmark::State& state) {
-  const Mesh slab = make_box(Vec3(0.5, 0.5, 0.5), Vec3(0, 0, 3.25));
-  FractureParams params;
-  params.fragments = 25;
-  params.seed = 3;
-  params.impact = Impact{Vec3(0.25, 0, 3.5), -Vec3::UnitX(), 4000.0, 0.4};
+  const Mesh slab = column_slab();
+  const FractureParams params = sideways_hit();
   static const Result<FemLiteAnalysis> reference = FemLiteFracturer().analyse(slab, params);
   FemLiteSettings settings;
   settings.max_cells = static_cast<int>(state.range(0));

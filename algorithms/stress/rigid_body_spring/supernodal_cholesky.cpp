@@ -1,9 +1,10 @@
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
-#include "algorithms/core/single_threaded_cholmod.h"
+#include "algorithms/stress/rigid_body_spring/inline_parallel_regions.h"
 #include "algorithms/stress/rigid_body_spring/node_ordering.h"
 
 #include <cholmod.h>
+#include <omp.h>
 
 #include <cassert>
 #include <limits>
@@ -56,6 +57,32 @@ cholmod_sparse view_lower(const Eigen::SparseMatrix<double>& lower) {
   return a;
 }
 
+/// Runs CHOLMOD single-threaded while alive. Debian's CHOLMOD opens OpenMP teams of 4 threads for
+/// large supernodes; on 2 shared cores the wake-ups cost more than they gain (evaluating the 23 x 22
+/// wall: 6.0 ms with them, 4.2 ms without; the 71 x 71 wall: 156 ms against 82 ms). The bound is a
+/// process-wide OpenMP setting, restored on exit; nothing else in shatterbench uses OpenMP. Even a team
+/// of one costs a team set-up and a futex wake-up per region, and CHOLMOD opens regions per supernode
+/// (~2,000 per factorisation of the 23 x 22 wall's in-plane half), so the guard also asks for the
+/// regions of this thread to run as plain calls (inline_parallel_regions.h; honoured when built with
+/// SHATTER_INLINE_PARALLEL_REGIONS, the default).
+class SingleThreaded {
+ public:
+  SingleThreaded() : saved_(omp_get_max_active_levels()), saved_inline_(run_parallel_regions_inline) {
+    omp_set_max_active_levels(0);
+    run_parallel_regions_inline = true;
+  }
+  ~SingleThreaded() {
+    run_parallel_regions_inline = saved_inline_;
+    omp_set_max_active_levels(saved_);
+  }
+  SingleThreaded(const SingleThreaded&) = delete;
+  SingleThreaded& operator=(const SingleThreaded&) = delete;
+
+ private:
+  int saved_;
+  bool saved_inline_;
+};
+
 }  // namespace
 
 SupernodalCholesky::SupernodalCholesky() : state_(std::make_unique<State>()) {}
@@ -68,7 +95,7 @@ bool SupernodalCholesky::analyze(const Eigen::SparseMatrix<double>& lower, std::
   State& s = *state_;
   if (s.factor) cholmod_free_factor(&s.factor, &s.common);
   cholmod_sparse a = view_lower(lower);
-  const SingleThreadedCholmod single;
+  const SingleThreaded single;
   if (groups.empty()) {
     s.common.method[0].ordering = CHOLMOD_AMD;
     s.factor = cholmod_analyze(&a, &s.common);
@@ -101,7 +128,7 @@ bool SupernodalCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
   State& s = *state_;
   if (!s.factor) return false;
   cholmod_sparse a = view_lower(lower);
-  const SingleThreadedCholmod single;
+  const SingleThreaded single;
   const int ok = cholmod_factorize(&a, s.factor, &s.common);
   return ok != 0 && s.common.status == CHOLMOD_OK && s.factor->minor == s.factor->n;
 }
@@ -117,7 +144,7 @@ Eigen::VectorXd SupernodalCholesky::solve(const Eigen::VectorXd& b) const {
   rhs.x = const_cast<double*>(b.data());
   rhs.xtype = CHOLMOD_REAL;
   rhs.dtype = CHOLMOD_DOUBLE;
-  const SingleThreadedCholmod single;
+  const SingleThreaded single;
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, s.factor, &rhs, &s.common);
   Eigen::VectorXd out;
   if (x) {

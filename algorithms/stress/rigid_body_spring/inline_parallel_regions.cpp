@@ -1,21 +1,8 @@
-#include "algorithms/core/single_threaded_cholmod.h"
-
-#include <omp.h>
+#include "algorithms/stress/rigid_body_spring/inline_parallel_regions.h"
 
 namespace shatter {
 
 thread_local bool run_parallel_regions_inline = false;
-
-SingleThreadedCholmod::SingleThreadedCholmod()
-    : saved_levels_(omp_get_max_active_levels()), saved_inline_(run_parallel_regions_inline) {
-  omp_set_max_active_levels(0);
-  run_parallel_regions_inline = true;
-}
-
-SingleThreadedCholmod::~SingleThreadedCholmod() {
-  run_parallel_regions_inline = saved_inline_;
-  omp_set_max_active_levels(saved_levels_);
-}
 
 }  // namespace shatter
 
@@ -26,7 +13,7 @@ SingleThreadedCholmod::~SingleThreadedCholmod() {
 #include <dlfcn.h>
 
 /// libgomp's entry point of `#pragma omp parallel` (GCC 4.9 and later), defined here so that it takes
-/// precedence over libgomp's for CHOLMOD's calls. Under SingleThreadedCholmod the region body runs as a plain
+/// precedence over libgomp's for CHOLMOD's calls. Under SingleThreaded the region body runs as a plain
 /// call on this thread: the same code a team of one runs (omp_get_num_threads() is 1 and
 /// omp_get_thread_num() 0 outside a team, worksharing and barriers outside a team are valid and act on
 /// this thread alone), without libgomp's team set-up and the futex wake-up at its closing barrier.
@@ -44,7 +31,7 @@ extern "C" void GOMP_parallel(void (*fn)(void*), void* data, unsigned num_thread
 
 /// SuiteSparse's wall clock, which CHOLMOD 3.0.14 reads around every BLAS call of a supernodal
 /// factorisation and solve for timing statistics (`cholmod_common` fields shatterbench never reads;
-/// no setting turns them off). Under SingleThreadedCholmod it returns 0 without reading the clock: the
+/// no setting turns them off). Under SingleThreaded it returns 0 without reading the clock: the
 /// statistics are then 0, nothing else changes. Evaluating the 23 x 22 wall spent about 6 % of its
 /// time in these clock reads (docs/stress.md, section 4). Everywhere else it forwards to SuiteSparse's.
 extern "C" double SuiteSparse_time(void) {
