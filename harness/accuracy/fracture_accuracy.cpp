@@ -108,15 +108,16 @@ std::vector<std::string> default_accuracy_fracturers(const Registries& registrie
   return out;
 }
 
-std::optional<std::pair<std::string, std::vector<double>>> accuracy_knob(
+std::vector<std::pair<std::string, std::vector<double>>> accuracy_knobs(
     const Registries& registries, const std::string& name,
     const std::map<std::string, std::vector<double>, std::less<>>& sweeps) {
+  std::vector<std::pair<std::string, std::vector<double>>> knobs;
   for (const SettingDoc& d : registries.fracturers.settings(name)) {
     if (d.accuracy_sweep.empty()) continue;
     const auto it = sweeps.find(d.key);
-    return std::make_pair(d.key, it != sweeps.end() ? it->second : d.accuracy_sweep);
+    knobs.emplace_back(d.key, it != sweeps.end() ? it->second : d.accuracy_sweep);
   }
-  return std::nullopt;
+  return knobs;
 }
 
 Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_name, const Solid& solid,
@@ -128,17 +129,16 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
   std::vector<AccuracyPoint> points;
   SelfIntersectionVerdicts verdicts;  // the solid is checked once for every setting and repetition
   for (const std::string& name : names) {
-    const auto knob = accuracy_knob(registries, name, options.sweeps);
+    const auto knobs = accuracy_knobs(registries, name, options.sweeps);
     for (const int n : options.fragments) {
-      if (knob) {
-        for (const double value : knob->second) {
-          Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name, {{knob->first, value}});
+      for (const auto& [key, values] : knobs)
+        for (const double value : values) {
+          Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name, {{key, value}});
           if (!f) return f.error();
-          Setting s{std::move(*f), n, std::make_pair(knob->first, value)};
+          Setting s{std::move(*f), n, std::make_pair(key, value)};
           points.push_back(measure(case_name, solid, impact, s, options, verdicts));
         }
-        continue;
-      }
+      if (!knobs.empty()) continue;
       Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name);
       if (!f) return f.error();
       Setting s{std::move(*f), n, std::nullopt};

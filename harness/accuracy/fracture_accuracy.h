@@ -30,16 +30,17 @@ struct FractureAccuracyOptions {
 /// (Fracturer::exact_reference).
 std::vector<std::string> default_accuracy_fracturers(const Registries& registries);
 
-/// The accuracy knob of fracturer `name`: its first documented setting with an accuracy sweep, and the
-/// values swept (from `sweeps` when it names the key); none when it has no knob.
-std::optional<std::pair<std::string, std::vector<double>>> accuracy_knob(
+/// The accuracy knobs of fracturer `name`: each documented setting with an accuracy sweep, in the
+/// order documented, with the values swept (from `sweeps` when it names the key); empty when it has
+/// none. Each knob is swept on its own, the other settings at their defaults.
+std::vector<std::pair<std::string, std::vector<double>>> accuracy_knobs(
     const Registries& registries, const std::string& name,
     const std::map<std::string, std::vector<double>, std::less<>>& sweeps);
 
 /// Runs the sweep on `solid` (named `case_name`), hit by `impact` when given. A fracturer or replay
 /// that fails at one setting gives a point without error whose figures hold `failed` (the message);
 /// an unknown fracturer name, or a knob value its settings refuse, is an error. Each fracturer runs at
-/// every fragment count, and at every value of its accuracy knob (accuracy_knob) when it has one.
+/// every fragment count, and at every value of each of its accuracy knobs (accuracy_knobs) when it has any.
 Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_name, const Solid& solid,
                                                      const std::optional<Impact>& impact,
                                                      const FractureAccuracyOptions& options,

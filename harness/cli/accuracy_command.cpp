@@ -66,11 +66,12 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   std::map<std::string, std::vector<double>, std::less<>> sweeps;
   sweeps["resolution"].assign(o.resolutions.begin(), o.resolutions.end());
   for (const std::string& name : o.fracturers.empty() ? default_accuracy_fracturers(registries) : o.fracturers) {
-    const auto knob = accuracy_knob(registries, name, sweeps);
-    if (!knob || knob->first != "resolution") continue;
-    for (const double r : knob->second)
-      if (auto f = registries.fracturers.create(name, {{"resolution", r}}); !f)
-        return fail_input("--resolution: " + f.error().message);
+    for (const auto& [key, values] : accuracy_knobs(registries, name, sweeps)) {
+      if (key != "resolution") continue;
+      for (const double r : values)
+        if (auto f = registries.fracturers.create(name, {{"resolution", r}}); !f)
+          return fail_input("--resolution: " + f.error().message);
+    }
   }
   for (const int b : o.vertex_budgets)
     if (b != 0 && (b < 4 || b > 256)) return fail_input(fmt::format("--vertex-budget: must be 0 or 4 to 256, got {}", b));

@@ -34,7 +34,7 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   // Short point labels: "25", "25 r8", "32 cg 1e-06", "32 cg cap 10".
   const auto short_knob = [](std::string k) {
     const std::pair<const char*, const char*> replacements[] = {
-        {"fragments=", ""}, {" resolution=", " r"}, {"slabs=", ""}, {" solver=default", ""},
+        {"fragments=", ""}, {" resolution=", " r"}, {" max_cells=", " c"}, {"slabs=", ""}, {" solver=default", ""},
         {"solver=default", "default"}, {" solver=cg tol=1e-12 cap=", " cg cap "}, {" solver=cg tol=", " cg "},
         {" cap=20000", ""}};
     for (const auto& [from, to] : replacements)

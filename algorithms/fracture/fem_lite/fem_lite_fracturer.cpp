@@ -75,7 +75,7 @@ std::vector<SettingDoc> fem_lite_setting_docs() {
   return {{"resolution", "cells", "16", "[2, " + std::to_string(kFemLiteMaxResolution) + "]",
            "grid cells along the longest axis of the solid's box", {8, 16, 32}},
           {"max_cells", "cells", "0", "[0, " + std::to_string(kFemLiteMaxCells) + "]",
-           "most grid cells over the solid's box; the resolution is lowered to fit (0: no budget)", {}},
+           "most grid cells over the solid's box; the resolution is lowered to fit (0: no budget)", {125, 512}},
           {"contact_time", "s", "0.0166667", "(0, 1e6]", "contact time of the impact: force = impulse / time", {}},
           {"crack_spacing", "cells", "1", "[0, 1e6]", "least distance of a new crack from an earlier plane", {}},
           {"min_piece_share", "", "0.01", "[0, 0.99]", "least piece a crack may cut off, share of the mean", {}}};

@@ -55,7 +55,7 @@ class FemLiteFracturer final : public Fracturer {
 };
 
 /// The documented settings of "fem-lite": the numeric fields of FemLiteSettings (the material,
-/// gravity and supports are a program's, not a case's); `resolution` is its accuracy knob.
+/// gravity and supports are a program's, not a case's); `resolution` and `max_cells` are its accuracy knobs.
 std::vector<SettingDoc> fem_lite_setting_docs();
 
 /// FemLiteSettings (defaults, with the given keys) from user settings; an error names the key and range.

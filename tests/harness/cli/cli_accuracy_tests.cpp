@@ -33,7 +33,16 @@ TEST_CASE("cli: accuracy short fracture run gives finite errors against the exac
   REQUIRE(r.out.find("## fracture") != std::string::npos);
   const auto j = nlohmann::json::parse(slurp(json));
   REQUIRE(j.at("kind") == "accuracy");
-  REQUIRE(j.at("points").size() == 3);
+  // plane-slice, voronoi, and fem-lite at resolution 16 and at each documented cell budget (125, 512).
+  REQUIRE(j.at("points").size() == 5);
+  int budgets = 0;
+  for (const auto& p : j.at("points"))
+    if (p.at("knobs").contains("max_cells")) {
+      CHECK(p.at("algorithm") == "fem-lite");
+      CHECK_FALSE(p.at("knobs").contains("resolution"));
+      ++budgets;
+    }
+  CHECK(budgets == 2);
   int front = 0;
   for (const auto& p : j.at("points")) {
     INFO(p.dump());
