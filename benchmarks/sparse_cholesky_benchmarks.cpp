@@ -6,7 +6,7 @@
 // section 3 ("Node blocks", "Partial refactorisation"). The main is in benchmark_main.cpp.
 #include "algorithms/stress/rigid_body_spring/decoupled_blocks.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
-#include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
+#include "algorithms/core/node_block_cholesky.h"
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 #include "fixtures/structures.h"

@@ -1,6 +1,7 @@
 #pragma once
-/// The linear-elastic solve of fem-lite: assemble K over the grid, drop the fixed degrees of freedom,
-/// solve K u = f with a sparse direct LDL^T factorisation (Eigen SimplicialLDLT, AMD ordering).
+/// The linear-elastic solve of fem-lite: assemble K over the grid, keep each fixed degree of freedom
+/// apart (its own equation u = 0), solve K u = f with a sparse direct L L^T factorisation in 3 x 3
+/// node blocks (NodeBlockCholesky, AMD ordering on the nodes).
 
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fem_lite/fem_loads.h"
@@ -17,7 +18,7 @@ struct FemSolveReport {
   int nonzeros = 0;            ///< stored entries of the reduced stiffness (lower triangle)
   int iterations = 0;          ///< 1 for the direct factorisation (0 when the load is zero)
   double residual = 0.0;       ///< |K u - f| / |f| on the reduced system (0 when f = 0)
-  double pivot_ratio = 0.0;    ///< smallest / largest |pivot| of the LDL^T (a conditioning hint)
+  double pivot_ratio = 0.0;    ///< smallest / largest pivot L_ii^2 of the factor (a conditioning hint)
 };
 
 /// The displacements and the report.

@@ -1,6 +1,6 @@
 #pragma once
 /// fem-lite: a coarse linear-elastic finite-element solve of the piece under the impact and gravity
-/// (8-node bricks on a regular grid, Eigen sparse LDL^T), crack planes through the most stressed
+/// (8-node bricks on a regular grid, sparse Cholesky in node blocks), crack planes through the most stressed
 /// elements normal to their largest principal stress, the solid cut along them by the plane-slice
 /// kernel. The planes are exposed so that the exact reference (cgal-clip) can replay them.
 

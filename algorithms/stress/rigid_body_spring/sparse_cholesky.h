@@ -9,7 +9,7 @@
 /// once the top separators are wide enough for BLAS; the switch is at kNodeBlockMaxFlops, measured on
 /// the benchmark walls (docs/stress.md, section 3). Nodes of mixed sizes always go to CHOLMOD.
 
-#include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
+#include "algorithms/core/node_block_cholesky.h"
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
 #include <Eigen/SparseCore>

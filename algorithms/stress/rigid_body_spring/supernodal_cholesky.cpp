@@ -1,7 +1,7 @@
 #include "algorithms/stress/rigid_body_spring/supernodal_cholesky.h"
 
 #include "algorithms/stress/rigid_body_spring/inline_parallel_regions.h"
-#include "algorithms/stress/rigid_body_spring/node_ordering.h"
+#include "algorithms/core/node_ordering.h"
 
 #include <cholmod.h>
 #include <omp.h>

@@ -4,8 +4,8 @@
 // only, against the rows found on dense factors; and the choice between node blocks and CHOLMOD
 // (sparse_cholesky.h).
 
+#include "algorithms/core/node_block_cholesky.h"
 #include "algorithms/core/random.h"
-#include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
 #include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
 
 #include <catch2/catch.hpp>
@@ -346,4 +346,21 @@ TEST_CASE("node-block Cholesky: refactorising recomputes exactly the rows that c
       CHECK((cholesky.solve(b).array() == before.array()).all());
     }
   }
+}
+
+TEST_CASE("node-block Cholesky: the pivot ratio of a diagonal matrix is its smallest over its largest entry",
+          "[stress]") {
+  // K = diag(4, 9, 1, 16, 25, 2.25) in two nodes of three: L = sqrt(K), pivots L_ii^2 = K_ii.
+  const std::vector<double> d = {4, 9, 1, 16, 25, 2.25};
+  Eigen::SparseMatrix<double> k(6, 6);
+  for (int i = 0; i < 6; ++i) k.insert(i, i) = d[static_cast<std::size_t>(i)];
+  k.makeCompressed();
+  const std::vector<int> nodes = {0, 0, 0, 1, 1, 1};
+  NodeBlockCholesky c;
+  CHECK(c.pivot_ratio() == 0.0);  // nothing factorised yet
+  REQUIRE(c.analyze(k, nodes));
+  REQUIRE(c.factorize(k));
+  CHECK(c.pivot_ratio() == Approx(1.0 / 25.0).epsilon(1e-15));
+  const Eigen::VectorXd x = c.solve(Eigen::VectorXd::Ones(6));
+  for (int i = 0; i < 6; ++i) CHECK(x[i] == Approx(1.0 / d[static_cast<std::size_t>(i)]).epsilon(1e-15));
 }

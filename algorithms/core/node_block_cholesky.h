@@ -51,6 +51,9 @@ class NodeBlockCholesky {
   /// only the rows whose values differ from the last ones (bit by bit) and their ancestors in the
   /// elimination tree are recomputed.
   bool factorize(const Eigen::SparseMatrix<double>& lower);
+  /// The smallest over the largest pivot L_ii^2 of the factor (the D of the equivalent L D L^T), a
+  /// conditioning hint; 0 when the last factorisation failed.
+  [[nodiscard]] double pivot_ratio() const;
   /// Node rows of L the last factorisation computed (all of them when it started from scratch).
   [[nodiscard]] int rows_refactorised() const { return rows_refactorised_; }
   /// Solves K x = b with the current factor (NaN everywhere when the last factorisation failed).

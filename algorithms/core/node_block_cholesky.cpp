@@ -1,6 +1,6 @@
-#include "algorithms/stress/rigid_body_spring/node_block_cholesky.h"
+#include "algorithms/core/node_block_cholesky.h"
 
-#include "algorithms/stress/rigid_body_spring/node_ordering.h"
+#include "algorithms/core/node_ordering.h"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Dense>
@@ -337,6 +337,22 @@ void NodeBlockCholesky::solve_blocks(double* x) const {
     const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
     segment(j) = inverse_jj.transpose() * s;
   }
+}
+
+double NodeBlockCholesky::pivot_ratio() const {
+  if (!factorised_ || !analysed()) return 0.0;
+  // diagonal_ holds the inverses of L's diagonal blocks, whose diagonal entries are 1 / L_ii: the
+  // pivot L_ii^2 is the inverse square of each.
+  const std::size_t g = static_cast<std::size_t>(size_);
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0.0;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(nodes_); ++k)
+    for (std::size_t t = 0; t < g; ++t) {
+      const double inverse = diagonal_[k * g * g + t * g + t];
+      const double pivot = 1.0 / (inverse * inverse);
+      smallest = std::min(smallest, pivot);
+      largest = std::max(largest, pivot);
+    }
+  return largest > 0.0 ? smallest / largest : 0.0;
 }
 
 Eigen::VectorXd NodeBlockCholesky::solve(const Eigen::VectorXd& b) const {

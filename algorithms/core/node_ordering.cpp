@@ -1,4 +1,4 @@
-#include "algorithms/stress/rigid_body_spring/node_ordering.h"
+#include "algorithms/core/node_ordering.h"
 
 #include <amd.h>
 
