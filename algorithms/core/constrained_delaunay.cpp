@@ -186,6 +186,9 @@ bool Triangulation::recover(Id u, Id v, Id weight, std::string& error) {
         if (tri.w[e] != 0 || step > tris.size()) return fail(error, "cap: constraint edges cross each other");
         crossing.emplace_back(a, b);
         const Id nt = tri.n[e];
+        // The walk left the triangulation: the segment runs outside every triangle, which only
+        // coordinates beyond the predicates' reach (a point 1e174 away) or a broken mesh make.
+        if (nt < 0) return fail(error, "cap: constraint edge leaves the triangulation");
         const int jj = opposite_index(nt, t);
         const Id w = tri_at(nt).v[jj];
         const int ow = w == v ? 0 : orient(from, v, w);
@@ -206,7 +209,8 @@ bool Triangulation::recover(Id u, Id v, Id weight, std::string& error) {
         const auto [ea, eb] = crossing[head++];
         Id s = -1;
         int i = -1;
-        edge_of(ea, eb, s, i);
+        if (!find_edge(ea, eb, s, i) || tri_at(s).n[i] < 0)
+          return fail(error, "cap: constraint recovery lost a crossing edge");
         const Id c = tri_at(s).v[i];
         const Id ns = tri_at(s).n[i];
         const Id d = tri_at(ns).v[opposite_index(ns, s)];
@@ -220,7 +224,7 @@ bool Triangulation::recover(Id u, Id v, Id weight, std::string& error) {
     }
     Id s = -1;
     int i = -1;
-    edge_of(from, end, s, i);
+    if (!find_edge(from, end, s, i)) return fail(error, "cap: constraint recovery did not make its edge");
     Tri& tri = tri_at(s);
     tri.w[i] += weight;
     link(s, i, tri.n[i], tri.w[i]);

@@ -110,11 +110,6 @@ struct Triangulation {
   void insert(Id q, Id& hint);
   /// The triangle t whose edge i runs a -> b; false when there is none.
   bool find_edge(Id a, Id b, Id& t, int& i) const;
-  /// find_edge for an edge known to exist.
-  void edge_of(Id a, Id b, Id& t, int& i) const {
-    [[maybe_unused]] const bool found = find_edge(a, b, t, i);
-    assert(found);
-  }
   /// Makes segment u -> v a constrained edge (split at points on it) with `weight` added; false with
   /// `error` when it crosses another constraint.
   bool recover(Id u, Id v, Id weight, std::string& error);

@@ -2,6 +2,7 @@
 // corpus, so every fuzz run replays it under AddressSanitizer and UndefinedBehaviorSanitizer.
 
 #include "algorithms/core/mass_properties.h"
+#include "algorithms/core/mesh_io.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/cap_triangulator.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
@@ -82,4 +83,21 @@ TEST_CASE("fuzz regression: a case key holding a newline is named on one line", 
   const Result<Case> value = parse_case(R"({"mesh": {"box": [1, 1, 1]}, "runtime": {"fracturer": "a\tb\u0007"}})", "v.json");
   REQUIRE_FALSE(value);
   CHECK(value.error().message.find_first_of("\t\a\n") == std::string::npos);
+}
+
+TEST_CASE("fuzz regression: an OFF polygon face with a point 1e174 away is refused, not walked off the cap",
+          "[hostile]") {
+  // off_reader_fuzzer found a quad face of a cube whose one vertex lies at y ~ 1e174: triangulating the
+  // face (constrained Delaunay, cap_triangulator.cpp) walked a constraint edge out of the
+  // triangulation and indexed triangle -1 (UndefinedBehaviorSanitizer: pointer overflow). The walk
+  // now stops with an error, which the reader reports on one line naming the file.
+  const auto path = std::filesystem::path(SHATTER_SOURCE_DIR) / "tests" / "fixtures" / "fuzz" / "off_polygon_face_far_point.off";
+  REQUIRE(std::filesystem::exists(path));
+  const Result<Mesh> mesh = read_mesh(path);
+  if (mesh) {  // reading it is a clean outcome too, if what is read is a valid mesh
+    CHECK(all_finite(*mesh));
+    return;
+  }
+  CHECK(mesh.error().message.find('\n') == std::string::npos);
+  CHECK_THAT(mesh.error().message, Catch::StartsWith(path.string()));
 }
