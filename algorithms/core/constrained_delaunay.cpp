@@ -151,7 +151,10 @@ bool Triangulation::find_edge(Id a, Id b, Id& t, int& i) const {
 /// by Sloan's flips, and adds `weight` to them.
 bool Triangulation::recover(Id u, Id v, Id weight, std::string& error) {
   Id from = u;
-  while (from != v) {
+  // Each piece ends at a point further along u -> v, so there are fewer pieces than points; more
+  // means the orientations were not consistent (coordinates beyond the predicates' exact range).
+  for (std::size_t pieces = 0; from != v; ++pieces) {
+    if (pieces > pts.size()) return fail(error, "cap: constraint recovery did not reach its end point");
     // Triangle (from, a, b) around `from` whose wedge holds the ray from -> v.
     Id t = vert_tri[at(from)];
     Id end = -1;

@@ -2,6 +2,7 @@
 
 #include "algorithms/core/cap_triangulator.h"
 #include "algorithms/core/predicates.h"
+#include "algorithms/core/representable_range.h"
 
 #include <cmath>
 #include <string>
@@ -22,6 +23,13 @@ Status triangulate_polygon(const std::vector<Vec3>& vertices, std::span<const st
     out.push_back({poly[0], poly[1], poly[2]});
     return {};
   }
+  // The exact predicates are exact only while their products neither overflow nor underflow: a
+  // corner beyond the representable range (which every solid must keep anyway) is refused here,
+  // before the triangulation could walk on inconsistent orientations.
+  for (const std::int32_t corner : poly)
+    if (!within_coordinate_range(vertices[corner]))
+      return Error{"a corner lies outside the representable range (every |coordinate| <= " +
+                   std::to_string(static_cast<long long>(kMaxCoordinate)) + " m)"};
   const Vec3& origin = vertices[poly[0]];
   Vec3 normal = Vec3::Zero();  // Newell: twice the vector area
   for (std::size_t i = 0; i < m; ++i)

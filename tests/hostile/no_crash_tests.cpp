@@ -290,6 +290,10 @@ TEST_CASE("no crash: polygon faces are triangulated into n - 2 triangles that co
   std::vector<Triangle> out;
   const std::vector<std::int32_t> four = {0, 1, 2, 3};
   CHECK_THAT(triangulate_polygon(bow_tie, four, out).error().message, Contains("crosses itself"));
+  // A corner beyond the representable range: refused before the exact predicates could overflow.
+  const std::vector<Vec3> far = {{0, 0, 0}, {1, 0, 0}, {1, 1e175, 0}, {0, 1, 0}, {0.5, 0.5, 0}};
+  const std::vector<std::int32_t> far_corners = {0, 1, 2, 3, 4};
+  CHECK_THAT(triangulate_polygon(far, far_corners, out).error().message, Contains("representable range"));
   std::vector<Vec3> pentagram;
   for (int i = 0; i < 5; ++i) {
     const double a = 4.0 * std::numbers::pi * i / 5;
