@@ -52,22 +52,36 @@ void append_planar_corners(MeshAttributes& attr, const Vec3& normal, const std::
 
 }  // namespace
 
+PlanarDressing::PlanarDressing(const AttributeLayout& layout, const Vec3& normal, double scale)
+    : scale_(scale), stride_(layout.stride()), uv_offset_(layout.uv_offset(0)), uv_sets_(layout.uv_sets) {
+  const PlanarFrame& frame = planar_frame(normal);
+  e1_ = frame.e[0];
+  e2_ = frame.e[1];
+  if (layout.normals) std::copy_n(frame.n.data(), 3, fixed_.begin() + AttributeLayout::normal_offset());
+  if (layout.tangents) {
+    double* tangent = fixed_.data() + layout.tangent_offset();
+    std::copy_n(frame.e[0].data(), 3, tangent);
+    tangent[3] = frame.handedness;
+  }
+}
+
+void PlanarDressing::write(const Vec3& a, const Vec3& b, const Vec3& c, double* out) const {
+  const auto stride = static_cast<std::size_t>(stride_);
+  for (const Vec3* q : {&a, &b, &c}) {
+    std::copy_n(fixed_.data(), stride, out);
+    const double u = q->dot(e1_) / scale_;
+    const double v = q->dot(e2_) / scale_;
+    for (int set = 0; set < uv_sets_; ++set) {
+      out[uv_offset_ + 2 * set] = u;
+      out[uv_offset_ + 2 * set + 1] = v;
+    }
+    out += stride;
+  }
+}
+
 void write_planar_corners(const AttributeLayout& layout, const Vec3& normal, const std::array<Vec3, 3>& p, double scale,
                           double* out) {
-  const PlanarFrame& frame = planar_frame(normal);
-  const Vec3& n = frame.n;
-  const std::array<Vec3, 2>& e = frame.e;
-  for (const Vec3& q : p) {
-    if (layout.normals) out = std::copy_n(n.data(), 3, out);
-    for (int set = 0; set < layout.uv_sets; ++set) {
-      *out++ = q.dot(e[0]) / scale;
-      *out++ = q.dot(e[1]) / scale;
-    }
-    if (layout.tangents) {
-      out = std::copy_n(e[0].data(), 3, out);
-      *out++ = frame.handedness;
-    }
-  }
+  PlanarDressing(layout, normal, scale).write(p[0], p[1], p[2], out);
 }
 
 void write_cut_corners(const MeshAttributes& attr, const Vec3& outward_normal, const std::array<Vec3, 3>& p,

@@ -72,6 +72,28 @@ void write_cut_corners(const MeshAttributes& attr, const Vec3& outward_normal, c
 void write_planar_corners(const AttributeLayout& layout, const Vec3& normal, const std::array<Vec3, 3>& p, double scale,
                           double* out);
 
+/// The dressing of write_planar_corners prepared once for one plane and written for many of its
+/// faces (a fracture dresses every cap face of a cut with one normal): each corner's normal and
+/// tangent are fixed, only its UVs depend on where it is. The values are write_planar_corners'.
+class PlanarDressing {
+ public:
+  /// The dressing of faces with normal `normal` (any non-zero length) in `layout`, UVs at `scale`
+  /// metres per unit.
+  PlanarDressing(const AttributeLayout& layout, const Vec3& normal, double scale);
+
+  /// Writes to `out` (3 x stride values) the corners of the face with positions `a`, `b`, `c`.
+  void write(const Vec3& a, const Vec3& b, const Vec3& c, double* out) const;
+
+ private:
+  std::array<double, kMaxCornerValues> fixed_{};  // one corner's values with its UVs left zero
+  Vec3 e1_ = Vec3::UnitX();                 // the plane's basis (cut_plane_basis)
+  Vec3 e2_ = Vec3::UnitY();
+  double scale_ = 1.0;
+  int stride_ = 0;
+  int uv_offset_ = 0;
+  int uv_sets_ = 0;
+};
+
 /// Orthonormal basis (e1, e2) of the plane with normal `normal`, built from its canonical normal (see
 /// the file comment): the same basis for `normal` and `-normal`.
 [[nodiscard]] std::array<Vec3, 2> cut_plane_basis(const Vec3& normal);

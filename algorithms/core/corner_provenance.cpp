@@ -23,18 +23,21 @@ Mesh CornerProvenance::tracked() const {
   return piece;
 }
 
-CornerProvenance::Cut CornerProvenance::cut_of(std::int32_t record) const {
-  if (record >= solid_faces_) return cuts_[static_cast<std::size_t>(record - solid_faces_)];
-  return {record, {CornerWeights{1.0, 0.0, 0.0}, CornerWeights{0.0, 1.0, 0.0}, CornerWeights{0.0, 0.0, 1.0}}};
-}
-
 std::int32_t CornerProvenance::mixed(std::int32_t parent, const std::array<CornerMix, 3>& mix) {
-  const Cut from = cut_of(parent);
-  Cut cut{from.face, {}};
+  // The new record is written in place: room is made first, so `from` (which may point into the
+  // records) stays valid.
+  if (cuts_.size() == cuts_.capacity()) cuts_.reserve(2 * cuts_.size() + 64);
+  static constexpr std::array<CornerWeights, 3> whole_face{CornerWeights{1.0, 0.0, 0.0}, CornerWeights{0.0, 1.0, 0.0},
+                                                           CornerWeights{0.0, 0.0, 1.0}};
+  const bool cut_before = parent >= solid_faces_;
+  const Cut* parent_cut = cut_before ? &cuts_[static_cast<std::size_t>(parent - solid_faces_)] : nullptr;
+  const std::array<CornerWeights, 3>& from = cut_before ? parent_cut->weights : whole_face;
+  Cut& cut = cuts_.emplace_back();
+  cut.face = cut_before ? parent_cut->face : parent;
   for (int i = 0; i < 3; ++i) {
     const CornerMix& m = mix[static_cast<std::size_t>(i)];
-    const CornerWeights& a = from.weights[static_cast<std::size_t>(m.from)];
-    const CornerWeights& b = from.weights[static_cast<std::size_t>(m.to)];
+    const CornerWeights& a = from[static_cast<std::size_t>(m.from)];
+    const CornerWeights& b = from[static_cast<std::size_t>(m.to)];
     CornerWeights& w = cut.weights[static_cast<std::size_t>(i)];
     if (m.from == m.to || m.t == 0.0) {
       w = a;
@@ -42,13 +45,13 @@ std::int32_t CornerProvenance::mixed(std::int32_t parent, const std::array<Corne
     }
     for (std::size_t k = 0; k < 3; ++k) w[k] = a[k] + m.t * (b[k] - a[k]);
   }
-  cuts_.push_back(cut);
   return solid_faces_ + static_cast<std::int32_t>(cuts_.size() - 1);
 }
 
 std::int32_t CornerProvenance::cap(const Vec3& outward_normal) {
-  cap_normals_.push_back(outward_normal);
-  return -static_cast<std::int32_t>(cap_normals_.size());
+  const MeshAttributes& attr = solid_.attributes;
+  cap_dressings_.emplace_back(attr.layout, outward_normal, attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0);
+  return -static_cast<std::int32_t>(cap_dressings_.size());
 }
 
 Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
@@ -59,8 +62,7 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
   const std::size_t face_values = 3 * stride;
   const bool materials = !solid_.attributes.materials.empty();
   const std::vector<std::int32_t>& records = piece.attributes.materials;
-  // Every face's values appended in order to one array reserved once (a run of whole faces in one
-  // copy, not zeroed first), the geometry the piece's own, moved.
+  // The geometry is the piece's own, moved.
   MeshAttributes& attr = out.attributes;
   if (materials) attr.materials.resize(faces);
   if (stride == 0) {
@@ -78,9 +80,12 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
     out.tags = std::move(piece.tags);
     return out;
   }
+  // Every face's values appended in order to one array reserved once, never zeroed first: a run of
+  // whole faces in one copy, a cap or cut face through a small buffer.
   std::vector<double>& corners = attr.corners;
   corners.reserve(faces * face_values);
   const double* solid_values = solid_.attributes.corners.data();
+  std::array<double, 3 * kMaxCornerValues> buffer;
   std::size_t f = 0;
   while (f < faces) {
     const std::int32_t record = records[f];
@@ -100,30 +105,27 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
       f += run;
       continue;
     }
-    corners.resize(corners.size() + face_values);
-    double* face = corners.data() + corners.size() - face_values;
     if (is_cap(record)) {
       const Triangle& t = piece.triangles[f];
-      write_cut_corners(attr, cap_normals_[static_cast<std::size_t>(-record - 1)],
-                        {piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
-                         piece.vertices[static_cast<std::size_t>(t[2])]},
-                        face);
+      cap_dressings_[static_cast<std::size_t>(-record - 1)].write(
+          piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
+          piece.vertices[static_cast<std::size_t>(t[2])], buffer.data());
       if (materials) attr.materials[f] = attr.cut.material;
-      ++f;
-      continue;
+    } else {
+      const Cut& cut = cuts_[static_cast<std::size_t>(record - solid_faces_)];
+      const auto source = static_cast<std::size_t>(cut.face);
+      // The weighted sum of interpolate_corners, inline: the same operations in the same order.
+      const double* a = solid_values + source * face_values;
+      const double* b = a + stride;
+      const double* c = b + stride;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const CornerWeights& w = cut.weights[k];
+        double* corner = buffer.data() + k * stride;
+        for (std::size_t i = 0; i < stride; ++i) corner[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
+      }
+      if (materials) attr.materials[f] = solid_.attributes.materials[source];
     }
-    const Cut& cut = cuts_[static_cast<std::size_t>(record - solid_faces_)];
-    const auto source = static_cast<std::size_t>(cut.face);
-    // The weighted sum of interpolate_corners, inline: the same operations in the same order.
-    const double* a = solid_values + source * face_values;
-    const double* b = a + stride;
-    const double* c = b + stride;
-    for (std::size_t k = 0; k < 3; ++k) {
-      const CornerWeights& w = cut.weights[k];
-      double* corner = face + k * stride;
-      for (std::size_t i = 0; i < stride; ++i) corner[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
-    }
-    if (materials) attr.materials[f] = solid_.attributes.materials[source];
+    corners.insert(corners.end(), buffer.data(), buffer.data() + face_values);
     ++f;
   }
   // One pass over the piece's values while they are still in cache (a piece is a part of the solid).

@@ -13,8 +13,8 @@
 ///     face's corners (a corner at a crossing mixes its parent corners' weights at the crossing's
 ///     parameter, the rule attribute_transfer.h applies to the values, so the result is the same
 ///     linear interpolation);
-///   - negative: a cap of the cut with outward normal `cap_normals[-r - 1]`, dressed as a cut face at
-///     the end (a cap face cut again stays a cap of the same plane).
+///   - negative: a cap of a cut with its outward normal, dressed as a cut face at the end (a cap face
+///     cut again stays a cap of the same plane).
 /// The records grow with the number of cut faces only (those a plane crosses), not with the solid.
 
 #include "algorithms/core/attribute_transfer.h"
@@ -59,13 +59,12 @@ class CornerProvenance {
     std::int32_t face;                    // face of the solid
     std::array<CornerWeights, 3> weights; // per corner, over that face's corners
   };
-  [[nodiscard]] Cut cut_of(std::int32_t record) const;
 
   const Mesh& solid_;
   std::string who_;  // names the fracture in resolve's error
   std::int32_t solid_faces_;
   std::vector<Cut> cuts_;          // record solid_faces_ + i
-  std::vector<Vec3> cap_normals_;  // record -(i + 1)
+  std::vector<PlanarDressing> cap_dressings_;  // record -(i + 1): its cut-face dressing
 };
 
 }  // namespace shatter

@@ -22,6 +22,9 @@ namespace shatter {
 /// Most UV sets one mesh may carry (glTF viewers read TEXCOORD_0 and TEXCOORD_1; assimp up to 8).
 inline constexpr int kMaxUvSets = 4;
 
+/// Most values one corner may hold (a normal, kMaxUvSets UV sets and a tangent).
+inline constexpr int kMaxCornerValues = 3 + 2 * kMaxUvSets + 4;
+
 /// Which channels each corner holds, in this order: normal (3), UV sets (2 each), tangent (4: a unit
 /// direction and the bitangent's handedness, +1 or -1, as in glTF).
 struct AttributeLayout {
