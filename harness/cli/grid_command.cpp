@@ -48,6 +48,7 @@ struct GridCommandOptions {
   std::vector<int> runtime;
   bool no_skip = false;
   bool same_seed = false;
+  int threads = 1;
   std::string cache_dir;
   bool no_cache = false;
   std::string format = "shatter";
@@ -137,6 +138,7 @@ Result<GridResult> run_under_callgrind(const GridCommandOptions& o, const std::f
   if (!o.runtime.empty()) add("--runtime", list(o.runtime));
   if (o.no_skip) argv.push_back("--no-skip");
   if (o.same_seed) argv.push_back("--same-seed");
+  if (o.threads != 1) add("--threads", std::to_string(o.threads));
   if (o.no_cache) argv.push_back("--no-cache");
   if (o.no_repair) argv.push_back("--no-repair");
   if (o.cap_uv_scale > 0.0) add("--cap-uv-scale", fmt::format("{}", o.cap_uv_scale));
@@ -194,6 +196,7 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   options.runtime = o.runtime;
   options.no_skip = o.no_skip;
   options.same_seed = o.same_seed;
+  options.threads = o.threads;
   options.count_instructions = o.metric == "instructions" && instruction_marks::running_on_valgrind();
   if (!o.schedule.empty()) {
     options.schedule = schedule_mode_from_name(o.schedule);
@@ -352,6 +355,9 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
   cmd->add_option("--metric", o->metric, "time (default) or instructions (counted under callgrind, per stage and frame)");
   cmd->add_flag("--same-seed", o->same_seed,
                 "Every repetition repeats the case's seed (the same workload): for regression gates");
+  cmd->add_option("--threads", o->threads,
+                  "Threads of each runtime event: its hit fragments' fractures and its pieces' colliders run "
+                  "on this many at once (default 1, single-threaded as the seed measured)");
   cmd->add_flag("--no-skip", o->no_skip, "Turn every automatic stage skip off (cache, box culling, partial re-solves)");
   cmd->add_option("--schedule", o->schedule,
                   "Schedule of the runtime event: immediate, prefetch or amortized (default: the case's schedule.mode)");

@@ -8,6 +8,7 @@
 #include "harness/grid/isolated_cell.h"
 #include "harness/limits.h"
 #include "harness/pipeline/instruction_marks.h"
+#include "harness/pipeline/workers.h"
 
 #include <fmt/core.h>
 
@@ -108,6 +109,8 @@ Status check_grid_options(const Case& c, const GridOptions& o, const Registries&
     return Error{fmt::format("--frames: must be <= {} (the limit per run), got {}", kMaxFrames, o.frames)};
   if (!std::isfinite(o.cell_timeout_s) || o.cell_timeout_s < 0.0)
     return Error{fmt::format("--timeout: must be a finite number of seconds > 0, got {}", o.cell_timeout_s)};
+  if (o.threads < 1 || o.threads > kMaxWorkerThreads)
+    return Error{fmt::format("--threads: must be in 1..{}, got {}", kMaxWorkerThreads, o.threads)};
   if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
   if (o.shard_count < 1 || o.shard_index < 0 || o.shard_index >= o.shard_count)
     return Error{"--shard: K/N needs N >= 1 and 0 <= K < N, got " + std::to_string(o.shard_index) + "/" +
@@ -149,6 +152,7 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     run.repetition = o.same_seed ? 0 : static_cast<std::uint64_t>(rep);
     run.frames = settings.frames;
     run.no_skip = o.no_skip;
+    run.threads = o.threads;
     run.cache = o.cache;
     run.verdicts = verdicts;
     run.partition_samples = o.partition_samples;
@@ -186,6 +190,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
   out.repetitions = o.repetitions;
   out.frames = settings.frames;
   out.no_skip = o.no_skip;
+  out.threads = o.threads;
   out.same_seed = o.same_seed;
   out.shard_index = o.shard_index;
   out.shard_count = o.shard_count;

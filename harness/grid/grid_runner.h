@@ -34,6 +34,7 @@ struct GridOptions {
   std::vector<int> prefracture;        ///< pre-fracture counts (empty: the case's grid.prefracture)
   std::vector<int> runtime;            ///< runtime counts (empty: the case's grid.runtime)
   bool no_skip = false;                ///< every automatic skip off (see destruction_run.h)
+  int threads = 1;                     ///< threads of each runtime event (RunOptions::threads), 1..kMaxWorkerThreads
   /// Every repetition repeats the case's seed (the same workload) instead of seed + k: what a
   /// regression gate wants, so that the repetitions differ by noise only (docs/compare.md).
   bool same_seed = false;

@@ -73,6 +73,10 @@ struct RunOptions {
   SelfIntersectionVerdicts* verdicts = nullptr;
   int partition_samples = 256;        ///< points of the partition-error test (untimed; 0 skips it)
   std::optional<ScheduleMode> schedule;  ///< schedule mode (none: the case's schedule.mode)
+  /// Threads of a runtime event's independent work (1..kMaxWorkerThreads, workers.h): each fracture
+  /// step takes this many hit fragments at once, each colliders step kColliderBatch pieces per thread.
+  /// Changes no result, only which frames are how long.
+  int threads = 1;
 };
 
 /// When one runtime event started and when its result took part in the world (docs/pipeline.md

@@ -13,6 +13,7 @@
 #include "harness/pipeline/destruction_run.h"
 #include "harness/pipeline/physics/physics_world.h"
 #include "harness/pipeline/stage_plan.h"
+#include "harness/pipeline/workers.h"
 
 #include <cstdint>
 #include <memory>
@@ -34,7 +35,8 @@ struct RunState {
         solid(prepared.solid),
         options(run_options),
         settings(run_settings(prepared.spec, run_options)),
-        registries(plugins) {}
+        registries(plugins),
+        workers(run_options.threads) {}
 
   const Case& spec;            ///< the case
   const Solid& solid;          ///< its validated solid
@@ -54,6 +56,7 @@ struct RunState {
   std::vector<std::uint8_t> anchored;   ///< per fragment: 1 when it overlaps an anchor region
   std::vector<int> static_body;         ///< per fragment: its static body in the world, or -1
   std::unique_ptr<PhysicsWorld> world;  ///< the physics world (none when colliders are not needed)
+  Workers workers;                      ///< the threads of the event's fractures and colliders
 
   int frame = 0;                        ///< the frame being run (setup: 0)
   std::vector<FadingPiece> fading;      ///< runtime pieces fading out, in the order they entered

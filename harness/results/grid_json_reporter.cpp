@@ -158,7 +158,8 @@ nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::orde
               {"repetitions", grid.repetitions},
               {"frames", grid.frames},
               {"no_skip", grid.no_skip},
-              {"same_seed", grid.same_seed}});
+              {"same_seed", grid.same_seed},
+              {"threads", grid.threads}});
   if (grid.shard_count > 1) out["shard"] = {{"index", grid.shard_index}, {"count", grid.shard_count}};
   if (grid.cell_timeout_s > 0.0) out["cell_timeout_s"] = grid.cell_timeout_s;
   out["passed"] = grid.passed();

@@ -75,9 +75,10 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
   if (!grid.cells.empty()) {
     const GridCell& first = grid.cells.front();
     out += fmt::format("Case `{}`: pre-fracture {}, runtime {}, stress {}; worst frame in ms (median over {} "
-                       "repetitions of each one's slowest of {} frames); budget {} ms; schedule {}\n\n",
+                       "repetitions of each one's slowest of {} frames); budget {} ms; schedule {}{}\n\n",
                        case_name, first.prefracturer, first.fracturer, first.stress, grid.repetitions, grid.frames,
-                       grid.budget_ms, first.schedule);
+                       grid.budget_ms, first.schedule,
+                       grid.threads > 1 ? fmt::format("; {} threads per event", grid.threads) : std::string());
   }
   out += cell_table(grid, [](const GridCell& c) {
     if (!c.failed.empty()) return fmt::format("**{} !**", c.failed);

@@ -133,6 +133,7 @@ Result<StoredGrid> merge_grids(const std::vector<StoredGrid>& parts, MergeParts 
     if (p.grid.frames != first.grid.frames) return differs("frames");
     if (p.grid.no_skip != first.grid.no_skip) return differs("no_skip");
     if (p.grid.same_seed != first.grid.same_seed) return differs("same_seed");
+    if (p.grid.threads != first.grid.threads) return differs("threads");
     if (p.grid.cell_timeout_s != first.grid.cell_timeout_s) return differs("cell_timeout_s");
     if (kind == MergeParts::repetitions) continue;
     for (const GridCell& c : p.grid.cells) {

@@ -318,6 +318,8 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
     out.grid.frames = static_cast<int>(integer(j, "frames", ""));
     out.grid.no_skip = boolean(j, "no_skip", "");
     out.grid.same_seed = boolean(j, "same_seed", "");
+    // Files written before worker threads ran every event on one thread.
+    if (j.contains("threads")) out.grid.threads = static_cast<int>(integer(j, "threads", ""));
     out.grid.wall_s = number(j, "wall_s", "");
     if (j.contains("cell_timeout_s")) out.grid.cell_timeout_s = number(j, "cell_timeout_s", "");
     if (j.contains("shard")) {

@@ -96,6 +96,7 @@ struct GridResult {
   int repetitions = 0;                 ///< runs per cell
   int frames = 0;                      ///< frames per run
   bool no_skip = false;                ///< automatic skips were off
+  int threads = 1;                     ///< threads of each runtime event (grid --threads)
   bool same_seed = false;              ///< every repetition used the same seed
   std::vector<GridCell> cells;         ///< pre-fracture major, runtime minor
   double wall_s = 0.0;                 ///< wall time of the whole grid, s

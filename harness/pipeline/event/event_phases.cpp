@@ -7,8 +7,10 @@
 
 #include <algorithm>
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace shatter {
 namespace {
@@ -43,8 +45,8 @@ bool select_hit_fragments(RunState& run, RuntimeEvent& e) {
   return true;
 }
 
-/// One hit fragment per step (the first step also chooses them; an impact that reaches nothing ends
-/// the event).
+/// One hit fragment per step and thread, fractured at once (the first step also chooses them; an
+/// impact that reaches nothing ends the event).
 Status fracture_phase(RunState& run, RuntimeEvent& e) {
   StageTimer timer(run.result.frame_stages, Stage::runtime_fracture);
   if (!e.selected && !select_hit_fragments(run, e)) {
@@ -55,14 +57,23 @@ Status fracture_phase(RunState& run, RuntimeEvent& e) {
   params.fragments = run.runtime_fragments;
   params.impact = *e.impact;
   params.verdicts = run.options.verdicts;  // a fragment broken again in a later repetition is not re-checked
-  const std::size_t k = e.pieces.size();
-  params.seed = runtime_seed(run.result, e.index, k);
-  const Fragment& target = run.result.fragments[static_cast<std::size_t>(e.hit_fragments[k])];
-  auto pieces = run.runtime_fracturer->fracture(target.mesh, params);
-  if (!pieces)
-    return Error{run.spec.name + ": runtime fracture at frame " + std::to_string(e.impact_frame) + ": " +
-                 pieces.error().message};
-  e.pieces.push_back(std::move(*pieces));
+  const std::size_t first = e.pieces.size();
+  const std::size_t batch =
+      std::min(static_cast<std::size_t>(run.workers.threads()), e.hit_fragments.size() - first);
+  // Each fracture writes its own slot; the seeds follow the hit fragment's index, not the thread.
+  std::vector<std::optional<Result<std::vector<Fragment>>>> fractured(batch);
+  run.workers.for_each(batch, [&](std::size_t i) {
+    FractureParams own = params;
+    own.seed = runtime_seed(run.result, e.index, first + i);
+    const Fragment& target = run.result.fragments[static_cast<std::size_t>(e.hit_fragments[first + i])];
+    fractured[i].emplace(run.runtime_fracturer->fracture(target.mesh, own));
+  });
+  for (std::optional<Result<std::vector<Fragment>>>& pieces : fractured) {
+    if (!*pieces)
+      return Error{run.spec.name + ": runtime fracture at frame " + std::to_string(e.impact_frame) + ": " +
+                   pieces->error().message};
+    e.pieces.push_back(std::move(**pieces));
+  }
   if (e.pieces.size() == e.hit_fragments.size()) {
     run.result.stages.ran(Stage::runtime_fracture);
     e.phase = phase_after(e.phase, event_route(run));
@@ -111,13 +122,17 @@ Status colliders_phase(RunState& run, RuntimeEvent& e) {
   std::size_t total = 0;
   for (const auto& list : e.pieces) total += list.size();
   if (e.piece_bodies.size() < total) {
+    // The next kColliderBatch pieces per thread, their hulls built at once.
+    const std::size_t until = std::min(
+        total, e.piece_bodies.size() + kColliderBatch * static_cast<std::size_t>(run.workers.threads()));
+    std::vector<const Fragment*> batch;
     std::size_t flat = 0;
-    const std::size_t until = std::min(total, e.piece_bodies.size() + kColliderBatch);
     for (const auto& list : e.pieces)
       for (const Fragment& p : list) {
-        if (flat >= e.piece_bodies.size() && flat < until) e.piece_bodies.push_back(run.world->prepare_fragment(p, density));
+        if (flat >= e.piece_bodies.size() && flat < until) batch.push_back(&p);
         ++flat;
       }
+    for (const int body : run.world->prepare_fragments(batch, density, run.workers)) e.piece_bodies.push_back(body);
   } else if (e.cluster_bodies.size() < e.falling.size()) {
     std::vector<Fragment> members;
     for (const int f : e.falling[e.cluster_bodies.size()])

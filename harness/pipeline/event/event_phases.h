@@ -9,7 +9,7 @@
 
 namespace shatter {
 
-/// Pieces prepared as colliders per step of the colliders phase.
+/// Pieces prepared as colliders per step of the colliders phase and worker thread (RunOptions::threads).
 inline constexpr std::size_t kColliderBatch = 4;
 
 /// The route `run`'s events take through the phases (bonds and a physics world or not).

@@ -239,36 +239,55 @@ struct PhysicsWorld::Impl {
     return hull;
   }
 
-  /// Adds a body made of `fragments` with their combined mass properties at `density`.
-  int add(std::span<const Fragment> fragments, double density, bool is_static, bool in_world = true) {
+  /// A body made of `fragments` with their combined mass properties at `density`, before Bullet's
+  /// rigid body exists: its hulls, mass and placement. Reads only `settings`, so bodies of different
+  /// fragments can be planned on different threads.
+  struct BodyPlan {
+    std::unique_ptr<Body> body;
+    double mass = 0.0;
+    btVector3 inertia{0, 0, 0};
+    btTransform start;
+  };
+
+  BodyPlan plan(std::span<const Fragment> fragments, double density, bool is_static) const {
     require(!fragments.empty(), "a body needs at least one fragment");
     require(std::isfinite(density) && density > 0.0, "density must be finite and > 0 kg/m^3");
     for (const Fragment& f : fragments) require_valid(f);
     const BodyMass m = combine(fragments);
 
-    auto b = std::make_unique<Body>();
+    BodyPlan out;
+    out.body = std::make_unique<Body>();
+    Body& b = *out.body;
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(density * m.inertia);
-    b->principal = eig.eigenvectors();
-    if (b->principal.determinant() < 0.0) b->principal.col(2) *= -1.0;  // a proper rotation
+    b.principal = eig.eigenvectors();
+    if (b.principal.determinant() < 0.0) b.principal.col(2) *= -1.0;  // a proper rotation
     const Vec3 moments = eig.eigenvalues();  // ascending, kg m^2
 
     if (fragments.size() == 1) {
-      b->shape = make_hull(fragments[0], m.centroid, b->principal);
+      b.shape = make_hull(fragments[0], m.centroid, b.principal);
     } else {
       auto compound = std::make_unique<btCompoundShape>();
       btTransform identity;
       identity.setIdentity();
       for (const Fragment& f : fragments) {
-        b->children.push_back(make_hull(f, m.centroid, b->principal));
-        compound->addChildShape(identity, b->children.back().get());
+        b.children.push_back(make_hull(f, m.centroid, b.principal));
+        compound->addChildShape(identity, b.children.back().get());
       }
-      b->shape = std::move(compound);
+      b.shape = std::move(compound);
     }
+    out.mass = is_static ? 0.0 : density * m.volume;
+    out.inertia = is_static ? btVector3(0, 0, 0) : to_bt(moments);
+    out.start = btTransform(to_bt_matrix(b.principal), to_bt(m.centroid));
+    return out;
+  }
 
-    const double mass = is_static ? 0.0 : density * m.volume;
-    const btVector3 inertia = is_static ? btVector3(0, 0, 0) : to_bt(moments);
-    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), nullptr, b->shape.get(), inertia);
-    info.m_startWorldTransform = btTransform(to_bt_matrix(b->principal), to_bt(m.centroid));
+  /// Gives a planned body its rigid body (Bullet numbers rigid bodies from a global counter: one thread
+  /// only) and its id, in the world or only prepared.
+  int store(BodyPlan&& planned, bool in_world) {
+    std::unique_ptr<Body> b = std::move(planned.body);
+    btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(planned.mass), nullptr, b->shape.get(),
+                                                  planned.inertia);
+    info.m_startWorldTransform = planned.start;
     info.m_friction = static_cast<btScalar>(settings.friction);
     info.m_restitution = static_cast<btScalar>(settings.restitution);
     b->rigid = std::make_unique<btRigidBody>(info);
@@ -280,6 +299,11 @@ struct PhysicsWorld::Impl {
     }
     bodies.push_back(std::move(b));
     return static_cast<int>(bodies.size()) - 1;
+  }
+
+  /// Adds a body made of `fragments` with their combined mass properties at `density`.
+  int add(std::span<const Fragment> fragments, double density, bool is_static, bool in_world = true) {
+    return store(plan(fragments, density, is_static), in_world);
   }
 };
 
@@ -308,6 +332,18 @@ int PhysicsWorld::add_cluster(std::span<const Fragment> fragments, double densit
 
 int PhysicsWorld::prepare_fragment(const Fragment& fragment, double density) {
   return impl_->add(std::span<const Fragment>(&fragment, 1), density, false, /*in_world=*/false);
+}
+
+std::vector<int> PhysicsWorld::prepare_fragments(std::span<const Fragment* const> fragments, double density,
+                                                 Workers& workers) {
+  std::vector<Impl::BodyPlan> plans(fragments.size());
+  workers.for_each(fragments.size(), [&](std::size_t i) {
+    plans[i] = impl_->plan(std::span<const Fragment>(fragments[i], 1), density, false);
+  });
+  std::vector<int> ids;
+  ids.reserve(plans.size());
+  for (Impl::BodyPlan& planned : plans) ids.push_back(impl_->store(std::move(planned), /*in_world=*/false));
+  return ids;
 }
 
 int PhysicsWorld::prepare_cluster(std::span<const Fragment> fragments, double density) {

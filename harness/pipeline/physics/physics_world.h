@@ -17,11 +17,13 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
+#include "harness/pipeline/workers.h"
 
 #include <Eigen/Core>
 
 #include <memory>
 #include <span>
+#include <vector>
 
 namespace shatter {
 
@@ -86,6 +88,9 @@ class PhysicsWorld {
   /// Makes a dynamic body of `fragment` (as add_fragment) without putting it in the world: the
   /// collider's cost can be paid before the body takes part (an amortized event). insert() adds it.
   int prepare_fragment(const Fragment& fragment, double density);
+  /// Makes a dynamic body of each of `fragments` as prepare_fragment does, their hulls built on
+  /// `workers`; the ids in the order of `fragments`, the same bodies on any number of threads.
+  std::vector<int> prepare_fragments(std::span<const Fragment* const> fragments, double density, Workers& workers);
   /// Makes a dynamic compound of `fragments` (as add_cluster) without putting it in the world.
   int prepare_cluster(std::span<const Fragment> fragments, double density);
   /// Puts a prepared body into the world (once).

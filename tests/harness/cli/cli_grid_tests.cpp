@@ -9,6 +9,7 @@
 #include <fstream>
 #include <utility>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -202,4 +203,26 @@ TEST_CASE("cli: grid refuses a bad --timeout with exit 2, one line, and writes n
   REQUIRE(line_count(r.err) == 1);
   REQUIRE(r.err.find("--timeout: not available with --metric instructions") != std::string::npos);
   REQUIRE(std::filesystem::is_empty(dir));
+}
+
+TEST_CASE("cli: grid --threads records its threads and gives the same outcome as one thread", "[cli][grid][threads]") {
+  const auto dir = scratch("threads");
+  const std::string cell = "grid --case tower --repetitions 1 --frames 12 --prefracture 30 --runtime 5 --no-cache";
+  std::vector<nlohmann::json> samples;
+  for (const int threads : {1, 2}) {
+    const auto json = dir / ("grid-" + std::to_string(threads) + ".json");
+    const auto r = run_cli(cell + " --threads " + std::to_string(threads) + " --json " + json.string());
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    const auto j = nlohmann::json::parse(slurp(json));
+    REQUIRE(j.at("threads") == threads);
+    samples.push_back(j.at("cells")[0].at("samples")[0]);
+  }
+  REQUIRE(samples[0].at("hit").get<int>() >= 2);
+  for (const char* key : {"fragments", "hit", "pieces", "broken_bonds", "falling_clusters", "bodies"}) {
+    INFO(key);
+    REQUIRE(samples[0].at(key) == samples[1].at(key));
+  }
+  // Two threads take the hit fragments two at a time: fewer steps.
+  REQUIRE(samples[1].at("event_steps").get<int>() < samples[0].at("event_steps").get<int>());
 }

@@ -21,8 +21,9 @@ using namespace shatter;
 
 using test::prepared;
 
-RunResult run(const PreparedCase& p, ScheduleMode mode, int frames = 40) {
+RunResult run(const PreparedCase& p, ScheduleMode mode, int frames = 40, int threads = 1) {
   RunOptions o;
+  o.threads = threads;
   o.partition_samples = 0;
   o.frames = frames;
   o.prefracture_fragments = 30;
@@ -70,6 +71,30 @@ TEST_CASE("schedule: immediate, prefetch and amortized give the same fragments, 
     require_same_outcome(immediate, amortized);
     REQUIRE(immediate.step_ms.size() == amortized.step_ms.size());
     if (std::string(name) == "cantilever") REQUIRE(!immediate.falling_clusters.empty());
+  }
+}
+
+TEST_CASE("threads: an event's fractures and colliders on worker threads give the same outcome as on one",
+          "[pipeline][schedule][threads]") {
+  // tower: several hit fragments (a fracture step takes one per thread); cantilever: falling clusters.
+  for (const char* name : {"tower", "cantilever"}) {
+    PreparedCase p = prepared(name);
+    p.spec.schedule.work_budget_ms = 0.0;
+    const RunResult one = run(p, ScheduleMode::immediate, 40, 1);
+    INFO(name);
+    REQUIRE(one.hit.size() >= (std::string(name) == "tower" ? 2U : 1U));
+    for (const int threads : {2, 3}) {
+      INFO("threads " << threads);
+      const RunResult several = run(p, ScheduleMode::immediate, 40, threads);
+      require_same_outcome(one, several);
+      REQUIRE(several.frame_bodies == one.frame_bodies);
+      // Amortized: the same outcome in fewer steps (a fracture step per `threads` hit fragments, a
+      // colliders step per kColliderBatch pieces a thread).
+      const RunResult amortized_one = run(p, ScheduleMode::amortized, 40, 1);
+      const RunResult amortized = run(p, ScheduleMode::amortized, 40, threads);
+      require_same_outcome(one, amortized);
+      if (one.hit.size() > 1) REQUIRE(amortized.step_ms.size() < amortized_one.step_ms.size());
+    }
   }
 }
 
