@@ -1,6 +1,7 @@
 #include "harness/pipeline/workers.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -9,7 +10,14 @@
 namespace shatter {
 
 struct Workers::Arena {
-  explicit Arena(int threads) : arena(threads) {}
+  // oneTBB allows one thread per core by default and ignores a larger arena (with a warning on
+  // stderr); the threads asked for are what runs, also beyond the machine's cores.
+  explicit Arena(int threads)
+      : allowed(tbb::global_control::max_allowed_parallelism,
+                std::max<std::size_t>(static_cast<std::size_t>(threads),
+                                      tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism))),
+        arena(threads) {}
+  tbb::global_control allowed;
   tbb::task_arena arena;
 };
 

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -22,6 +23,24 @@ TEST_CASE("workers: every index runs exactly once, on any number of threads", "[
       workers.for_each(count, [&](std::size_t i) { runs[i].fetch_add(1); });
       for (const auto& r : runs) REQUIRE(r.load() == 1);
     }
+  }
+}
+
+TEST_CASE("workers: N threads run N tasks at once, also beyond the machine's cores", "[pipeline][threads]") {
+  // Each task waits until all have started: only N threads at once let every task see all N arrive
+  // (a deadline keeps a failure from hanging the suite).
+  for (const int threads : {2, 3, 5}) {
+    Workers workers(threads);
+    std::atomic<int> arrived{0};
+    std::atomic<int> saw_all{0};
+    workers.for_each(static_cast<std::size_t>(threads), [&](std::size_t) {
+      arrived.fetch_add(1);
+      const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+      while (arrived.load() < threads && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
+      if (arrived.load() == threads) saw_all.fetch_add(1);
+    });
+    INFO("threads " << threads);
+    REQUIRE(saw_all.load() == threads);
   }
 }
 
