@@ -182,6 +182,9 @@ struct ScheduleSpec {
   ScheduleMode mode = ScheduleMode::immediate;  ///< `mode`
   int prefetch_frames = 2;                      ///< frames from the trigger to the impact (prefetch), >= 0
   double work_budget_ms = 4.0;                  ///< event work per frame (amortized), ms, >= 0 (0: one step a frame)
+  /// New bodies an event puts into the world per frame, whole hit fragments at a time (at least one
+  /// a frame), the rest in the frames after; 0: all at once. >= 0.
+  int max_new_bodies_per_frame = 0;
 };
 
 /// `fade_out`: small runtime pieces shrink and leave the physics world (off without the key).

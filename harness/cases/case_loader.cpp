@@ -251,7 +251,7 @@ Needs read_needs(JsonReader& r, const json& v) {
 
 ScheduleSpec read_schedule(JsonReader& r, const json& v) {
   ScheduleSpec s;
-  if (!r.object(v, "schedule", {"mode", "prefetch_frames", "work_budget_ms"})) return s;
+  if (!r.object(v, "schedule", {"mode", "prefetch_frames", "work_budget_ms", "max_new_bodies_per_frame"})) return s;
   std::string mode;
   if (r.read(v, "schedule", "mode", mode)) {
     if (const auto m = schedule_mode_from_name(mode))
@@ -261,6 +261,8 @@ ScheduleSpec read_schedule(JsonReader& r, const json& v) {
   }
   if (r.read(v, "schedule", "prefetch_frames", s.prefetch_frames)) r.at_least("schedule.prefetch_frames", s.prefetch_frames, 0);
   if (r.read(v, "schedule", "work_budget_ms", s.work_budget_ms)) r.non_negative("schedule.work_budget_ms", s.work_budget_ms);
+  if (r.read(v, "schedule", "max_new_bodies_per_frame", s.max_new_bodies_per_frame))
+    r.at_least("schedule.max_new_bodies_per_frame", s.max_new_bodies_per_frame, 0);
   return s;
 }
 

@@ -144,32 +144,66 @@ Status colliders_phase(RunState& run, RuntimeEvent& e) {
   return {};
 }
 
-/// Hit and falling static bodies out, the prepared bodies in, the impulse shared by the pieces in
-/// proportion to their mass; small pieces start fading.
-void replace_bodies(RunState& run, const RuntimeEvent& e) {
-  StageTimer timer(run.result.frame_stages, Stage::colliders);
-  PhysicsWorld& world = *run.world;
-  const Impact& impact = *e.impact;
+/// The impulse's velocity change, shared by all of the event's pieces in proportion to their mass.
+Vec3 event_velocity_change(const RunState& run, const RuntimeEvent& e) {
   const double density = run.spec.material.density;
-  for (const int f : e.hit_fragments) world.remove(run.static_body[static_cast<std::size_t>(f)]);
   double total_mass = 0.0;
   for (const auto& list : e.pieces)
     for (const Fragment& p : list) total_mass += density * p.mass.volume;
-  const Vec3 velocity_change = total_mass > 0 ? Vec3(impact.direction * (impact.impulse / total_mass)) : Vec3::Zero();
+  return total_mass > 0 ? Vec3(e.impact->direction * (e.impact->impulse / total_mass)) : Vec3::Zero();
+}
+
+/// Puts the event's prepared bodies into the world: the hit fragments' static bodies out and their
+/// pieces in (the impulse given, small pieces start fading), then each falling cluster's static bodies
+/// out and its compound in. Without a cap on new bodies per frame all go in now; with one, as many
+/// whole hit fragments (then clusters) as fit under it in this frame, at least one a frame, the rest
+/// in later steps, and on the run's last frame all that is left. True when every body is in.
+bool replace_bodies(RunState& run, RuntimeEvent& e) {
+  StageTimer timer(run.result.frame_stages, Stage::colliders);
+  PhysicsWorld& world = *run.world;
+  const double density = run.spec.material.density;
+  const int cap = run.spec.schedule.max_new_bodies_per_frame;
+  const bool last_frame = run.frame == run.settings.frames - 1;
+  if (e.spawn_frame != run.frame) {
+    e.spawn_frame = run.frame;
+    e.spawned_in_frame = 0;
+  }
+  // The items (hit fragments, then clusters) this step puts in: [first, until).
+  const std::size_t hits = e.hit_fragments.size();
+  const std::size_t items = hits + e.falling.size();
+  const std::size_t first = e.items_in_world;
+  std::size_t until = first;
+  while (until < items) {
+    const int bodies = static_cast<int>(until < hits ? e.pieces[until].size() : 1);
+    const bool fits = cap == 0 || last_frame || e.spawned_in_frame == 0 || e.spawned_in_frame + bodies <= cap;
+    if (!fits) break;
+    e.spawned_in_frame += bodies;
+    ++until;
+  }
+  const std::size_t hits_until = std::min(until, hits);
+  for (std::size_t k = first; k < hits_until; ++k) world.remove(run.static_body[static_cast<std::size_t>(e.hit_fragments[k])]);
+  const Vec3 velocity_change = event_velocity_change(run, e);
   std::size_t flat = 0;
-  for (const auto& list : e.pieces) {
-    for (const Fragment& p : list) {
+  for (std::size_t k = 0; k < first && k < hits; ++k) flat += e.pieces[k].size();
+  for (std::size_t k = first; k < hits_until; ++k) {
+    for (const Fragment& p : e.pieces[k]) {
       const int body = e.piece_bodies[flat++];
       world.insert(body);
-      if (impact.impulse > 0) world.apply_impulse(body, velocity_change * (density * p.mass.volume), p.mass.centroid);
+      if (e.impact->impulse > 0) world.apply_impulse(body, velocity_change * (density * p.mass.volume), p.mass.centroid);
       if (run.spec.fade_out.enabled && p.mass.volume < run.spec.fade_out.max_volume)
         run.fading.push_back({body, run.frame});
     }
   }
-  for (std::size_t k = 0; k < e.falling.size(); ++k) {
-    for (const int f : e.falling[k]) world.remove(run.static_body[static_cast<std::size_t>(f)]);
-    world.insert(e.cluster_bodies[k]);
+  for (std::size_t k = std::max(first, hits); k < until; ++k) {
+    for (const int f : e.falling[k - hits]) world.remove(run.static_body[static_cast<std::size_t>(f)]);
+    world.insert(e.cluster_bodies[k - hits]);
   }
+  e.items_in_world = until;
+  if (until < items) {
+    e.waits_until = run.frame + 1;
+    return false;
+  }
+  return true;
 }
 
 /// Debris particles for the new cut area, at the pieces' centroids.
@@ -190,7 +224,7 @@ void spawn_debris(RunState& run, const RuntimeEvent& e) {
 /// The event's result takes part in the world from this frame's physics step on; its fragments, pieces
 /// and clusters join the run's result.
 Status make_visible_phase(RunState& run, RuntimeEvent& e) {
-  if (run.world) replace_bodies(run, e);
+  if (run.world && !replace_bodies(run, e)) return {};  // the rest of the bodies in a later frame
   if (run.debris) spawn_debris(run, e);
   RunResult& r = run.result;
   for (std::size_t k = 0; k < e.hit_fragments.size(); ++k) {

@@ -49,6 +49,12 @@ struct RuntimeEvent {
   std::vector<std::vector<int>> falling;      ///< clusters that lost their anchors through this event
   std::vector<int> piece_bodies;              ///< prepared bodies of the pieces, flat, in piece order
   std::vector<int> cluster_bodies;            ///< prepared bodies of the falling clusters
+  std::size_t items_in_world = 0;             ///< hit fragments, then falling clusters, whose bodies are in the world
+  int spawn_frame = -1;                       ///< the frame of the last make_visible step
+  int spawned_in_frame = 0;                   ///< new bodies that step's frame put into the world
+  /// make_visible has reached the frame's cap on new bodies (schedule.max_new_bodies_per_frame): no
+  /// schedule steps this event again before `waits_until`.
+  int waits_until = -1;
 };
 
 /// The events of `impacts` in the order they land (frame, then file order), indexed in that order. An

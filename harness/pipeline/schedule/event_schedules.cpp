@@ -4,8 +4,10 @@ namespace shatter {
 
 Status run_immediate(EventQueue& queue, int frame, const EventStepper& step) {
   while (!queue.empty() && queue.front()->impact_frame <= frame) {
-    while (queue.front()->phase != EventPhase::done)
-      if (Result<double> ms = step(*queue.front()); !ms) return ms.error();
+    RuntimeEvent& e = *queue.front();
+    while (e.phase != EventPhase::done && e.waits_until <= frame)
+      if (Result<double> ms = step(e); !ms) return ms.error();
+    if (e.phase != EventPhase::done) return {};  // it goes on in a later frame; the events after it wait
     queue.pop_front();
   }
   return {};
@@ -23,6 +25,7 @@ Status run_amortized(EventQueue& queue, int frame, bool last_frame, double work_
   bool first = true;
   while (!queue.empty() && queue.front()->impact_frame <= frame) {
     if (!first && !last_frame && spent >= work_budget_ms) break;
+    if (queue.front()->waits_until > frame) break;
     Result<double> ms = step(*queue.front());
     if (!ms) return ms.error();
     spent += *ms;

@@ -19,7 +19,8 @@ using EventQueue = std::deque<RuntimeEvent*>;
 using EventStepper = std::function<Result<double>(RuntimeEvent&)>;
 
 /// `immediate`: every queued event whose impact has landed (impact frame <= `frame`) runs to the end,
-/// in order, and leaves the queue.
+/// in order, and leaves the queue. An event that waits for a later frame (RuntimeEvent::waits_until:
+/// its new bodies capped per frame) stops there, and the events after it wait with it.
 Status run_immediate(EventQueue& queue, int frame, const EventStepper& step);
 
 /// `prefetch`: every queued event's fracture runs now (the projectile is in flight); then as
@@ -28,7 +29,8 @@ Status run_prefetch(EventQueue& queue, int frame, const EventStepper& step);
 
 /// `amortized`: the steps of landed events in order, at least one a frame, no step started once the
 /// frame's step time reaches `work_budget_ms` (ms): a frame spends at most the budget plus one step.
-/// In the `last_frame` of the run, everything left runs. Finished events leave the queue.
+/// In the `last_frame` of the run, everything left runs. Finished events leave the queue; an event that
+/// waits for a later frame ends the frame's steps.
 Status run_amortized(EventQueue& queue, int frame, bool last_frame, double work_budget_ms, const EventStepper& step);
 
 /// The schedule `mode` (with `spec`'s work budget) for one frame.

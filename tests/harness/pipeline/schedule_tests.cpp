@@ -14,6 +14,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -96,6 +97,49 @@ TEST_CASE("threads: an event's fractures and colliders on worker threads give th
       if (one.hit.size() > 1) REQUIRE(amortized.step_ms.size() < amortized_one.step_ms.size());
     }
   }
+}
+
+TEST_CASE("spawn cap: new bodies enter whole hit fragments at a time, at most the cap a frame, the rest later",
+          "[pipeline][schedule][spawn]") {
+  PreparedCase p = prepared("tower");
+  const RunResult all = run(p, ScheduleMode::immediate);
+  REQUIRE(all.hit.size() >= 2);
+  REQUIRE(all.latency.frames == 1);
+  for (const int cap : {1, 12, 25}) {
+    INFO("cap " << cap);
+    p.spec.schedule.max_new_bodies_per_frame = cap;
+    for (const ScheduleMode mode : {ScheduleMode::immediate, ScheduleMode::amortized}) {
+      const RunResult capped = run(p, mode);
+      require_same_outcome(all, capped);
+      // The frames the rule needs: hit fragments' pieces, then each falling cluster (one body), in
+      // order, a frame taking items while they fit under the cap and always at least one.
+      int frames = 1;
+      int in_frame = 0;
+      std::vector<int> items;
+      for (const auto& pieces : capped.pieces) items.push_back(static_cast<int>(pieces.size()));
+      for (std::size_t k = 0; k < capped.falling_clusters.size(); ++k) items.push_back(1);
+      for (const int bodies : items) {
+        if (in_frame > 0 && in_frame + bodies > cap) {
+          ++frames;
+          in_frame = 0;
+        }
+        in_frame += bodies;
+      }
+      if (mode == ScheduleMode::immediate) {
+        REQUIRE(capped.latency.frames == frames);
+        REQUIRE(capped.latency.visible_frame == capped.latency.impact_frame + frames - 1);
+      } else {
+        REQUIRE(capped.latency.frames >= frames);  // amortized adds the frames of its other steps
+      }
+      if (frames > 1) {
+        // In the impact frame fewer bodies stand than when all enter at once.
+        const auto impact = static_cast<std::size_t>(all.latency.visible_frame);
+        if (mode == ScheduleMode::immediate) REQUIRE(capped.frame_bodies[impact] < all.frame_bodies[impact]);
+      }
+    }
+  }
+  p.spec.schedule.max_new_bodies_per_frame = 0;
+  require_same_outcome(all, run(p, ScheduleMode::immediate));
 }
 
 TEST_CASE("schedule: amortized never spends more than its budget plus one step in a frame", "[pipeline][schedule]") {
@@ -214,6 +258,8 @@ TEST_CASE("schedule: bad schedule, fade-out and debris keys are errors naming th
       {R"("schedule": {"mode": "later"}})", "schedule.mode"},
       {R"("schedule": {"work_budget_ms": -1}})", "schedule.work_budget_ms"},
       {R"("schedule": {"prefetch_frames": -2}})", "schedule.prefetch_frames"},
+      {R"("schedule": {"max_new_bodies_per_frame": -1}})", "schedule.max_new_bodies_per_frame"},
+      {R"("schedule": {"max_new_bodies_per_frame": 2.5}})", "schedule.max_new_bodies_per_frame"},
       {R"("schedule": {"mode": "prefetch", "frames": 2}})", "frames"},
       {R"("fade_out": {"volume": -0.1}})", "fade_out.volume"},
       {R"("fade_out": {"volume": 0.1, "lifetime_frames": 0}})", "fade_out.lifetime_frames"},
@@ -229,11 +275,13 @@ TEST_CASE("schedule: bad schedule, fade-out and debris keys are errors naming th
     REQUIRE(c.error().message.find(b.key) != std::string::npos);
   }
   const Result<Case> good =
-      parse_case(head + R"("schedule": {"mode": "amortized", "work_budget_ms": 2}, "fade_out": {"volume": 0.01},
+      parse_case(head + R"("schedule": {"mode": "amortized", "work_budget_ms": 2, "max_new_bodies_per_frame": 40},
+                 "fade_out": {"volume": 0.01},
                  "debris": {"per_impact": 5}})",
                  "x.json");
   REQUIRE(good);
   REQUIRE(good->schedule.mode == ScheduleMode::amortized);
+  REQUIRE(good->schedule.max_new_bodies_per_frame == 40);
   REQUIRE(good->fade_out.enabled);
   REQUIRE(good->debris.per_impact == 5);
 }
