@@ -73,9 +73,11 @@ struct RunOptions {
   SelfIntersectionVerdicts* verdicts = nullptr;
   int partition_samples = 256;        ///< points of the partition-error test (untimed; 0 skips it)
   std::optional<ScheduleMode> schedule;  ///< schedule mode (none: the case's schedule.mode)
-  /// Threads of a runtime event's independent work (1..kMaxWorkerThreads, workers.h): each fracture
-  /// step takes this many hit fragments at once, each colliders step kColliderBatch pieces per thread.
-  /// Changes no result, only which frames are how long.
+  /// Threads of a runtime event's independent work (1..kMaxWorkerThreads, workers.h): the hit
+  /// fragments' fractures and the pieces' hulls run on this many at once (under `amortized` a step
+  /// takes one hit fragment, or kColliderBatch pieces, per thread; under the other schedules, whose
+  /// steps all run in one frame, one step takes them all). Changes no result, only which frames are
+  /// how long and how many steps the event takes.
   int threads = 1;
 };
 

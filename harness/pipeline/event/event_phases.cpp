@@ -20,6 +20,17 @@ std::uint64_t runtime_seed(const RunResult& r, int index, std::size_t k) {
   return r.runtime_seed + 1000003ULL * static_cast<std::uint64_t>(index) + k;
 }
 
+/// How many of `left` independent items (hit fragments to fracture, pieces to prepare) one step takes
+/// when one thread takes `per_thread`: on one thread `per_thread`; on several, under `amortized` (whose
+/// steps are spread over frames and must stay small) `per_thread` a thread, otherwise all of them in
+/// one step, which runs in one frame anyway and lets the workers balance uneven items.
+std::size_t items_per_step(const RunState& run, std::size_t left, std::size_t per_thread) {
+  const auto threads = static_cast<std::size_t>(run.workers.threads());
+  if (threads == 1) return std::min(left, per_thread);
+  if (run.result.schedule == ScheduleMode::amortized) return std::min(left, per_thread * threads);
+  return left;
+}
+
 /// Chooses the hit fragments (the first step of the phase). False when the impact reaches nothing.
 bool select_hit_fragments(RunState& run, RuntimeEvent& e) {
   const Impact& impact = *e.impact;
@@ -45,8 +56,8 @@ bool select_hit_fragments(RunState& run, RuntimeEvent& e) {
   return true;
 }
 
-/// One hit fragment per step and thread, fractured at once (the first step also chooses them; an
-/// impact that reaches nothing ends the event).
+/// The hit fragments a step takes (items_per_step), fractured at once (the first step also chooses
+/// them; an impact that reaches nothing ends the event).
 Status fracture_phase(RunState& run, RuntimeEvent& e) {
   StageTimer timer(run.result.frame_stages, Stage::runtime_fracture);
   if (!e.selected && !select_hit_fragments(run, e)) {
@@ -58,8 +69,7 @@ Status fracture_phase(RunState& run, RuntimeEvent& e) {
   params.impact = *e.impact;
   params.verdicts = run.options.verdicts;  // a fragment broken again in a later repetition is not re-checked
   const std::size_t first = e.pieces.size();
-  const std::size_t batch =
-      std::min(static_cast<std::size_t>(run.workers.threads()), e.hit_fragments.size() - first);
+  const std::size_t batch = items_per_step(run, e.hit_fragments.size() - first, 1);
   // Each fracture writes its own slot; the seeds follow the hit fragment's index, not the thread.
   std::vector<std::optional<Result<std::vector<Fragment>>>> fractured(batch);
   run.workers.for_each(batch, [&](std::size_t i) {
@@ -122,9 +132,8 @@ Status colliders_phase(RunState& run, RuntimeEvent& e) {
   std::size_t total = 0;
   for (const auto& list : e.pieces) total += list.size();
   if (e.piece_bodies.size() < total) {
-    // The next kColliderBatch pieces per thread, their hulls built at once.
-    const std::size_t until = std::min(
-        total, e.piece_bodies.size() + kColliderBatch * static_cast<std::size_t>(run.workers.threads()));
+    // The next pieces (items_per_step), their hulls built at once.
+    const std::size_t until = e.piece_bodies.size() + items_per_step(run, total - e.piece_bodies.size(), kColliderBatch);
     std::vector<const Fragment*> batch;
     std::size_t flat = 0;
     for (const auto& list : e.pieces)

@@ -9,7 +9,8 @@
 
 namespace shatter {
 
-/// Pieces prepared as colliders per step of the colliders phase and worker thread (RunOptions::threads).
+/// Pieces prepared as colliders per step of the colliders phase (per worker thread under `amortized`;
+/// with several threads the other schedules take all pieces in one step: RunOptions::threads).
 inline constexpr std::size_t kColliderBatch = 4;
 
 /// The route `run`'s events take through the phases (bonds and a physics world or not).
