@@ -19,6 +19,7 @@
 #include <mutex>
 #include <set>
 #include <system_error>
+#include <vector>
 
 namespace shatter {
 namespace {
@@ -162,11 +163,34 @@ std::string gltf_primitive_problem(const nlohmann::json& doc, const nlohmann::js
 /// (gltf_bounds_problem), an image MIME type without '/' (assimp reads past it), and a primitive
 /// that assimp cannot convert safely (gltf_primitive_problem).
 std::string gltf_json_problem(std::string_view text) {
+  // A key twice in one object: the checks below read the last (nlohmann), assimp's reader finds the
+  // first, so what is checked would not be what is imported (a mesh listed twice hid a one-entry
+  // strip from the checks, found by gltf_reader_fuzzer).
+  std::vector<std::set<std::string>> open_objects;
+  std::string twice;
+  const auto note_keys = [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+    using Event = nlohmann::json::parse_event_t;
+    if (event == Event::object_start) {
+      open_objects.emplace_back();
+    } else if (event == Event::object_end) {
+      if (!open_objects.empty()) open_objects.pop_back();
+    } else if (event == Event::key && twice.empty() && !open_objects.empty() && parsed.is_string() &&
+               !open_objects.back().insert(parsed.get<std::string>()).second) {
+      twice = parsed.get<std::string>();
+    }
+    return true;
+  };
   nlohmann::json doc;
   try {
-    doc = nlohmann::json::parse(text);
+    doc = nlohmann::json::parse(text, note_keys);
   } catch (const nlohmann::json::exception& e) {
     return std::string("the glTF JSON does not parse: ") + e.what();
+  }
+  if (!twice.empty()) {
+    // The key as printable text, shortened: the message stays one line.
+    std::string shown;
+    for (const char c : twice.substr(0, 40)) shown += (c >= 0x20 && c < 0x7f) ? c : '?';
+    return "the glTF JSON has the key \"" + shown + "\" twice in one object (which one holds is ambiguous)";
   }
   if (!doc.is_object()) return "the glTF JSON is not an object";
   if (const std::string bounds = gltf_bounds_problem(doc); !bounds.empty()) return bounds;

@@ -143,6 +143,16 @@ TEST_CASE("read_asset: glTF that assimp would crash on or read past is refused b
   CHECK_THAT(mode_count("triangles", '4', "35"), Contains("multiple of 3"));
   CHECK_THAT(one_line_error(edited("mode", "\"mode\":4", "\"mode\":9")), Contains("no valid mode"));
   CHECK_THAT(one_line_error(edited("indices", "\"indices\":0", "\"indices\":7")), Contains("no valid index accessor"));
+  // A key twice in one object: the checks would read the second "meshes" (no primitives) and assimp
+  // the first (here a triangle strip of one index entry).
+  {
+    const fs::path strip = edited("twice", "\"mode\":4", "\"mode\":5");
+    std::string bytes = bytes_of(strip);
+    bytes.replace(bytes.find("\"count\":36,"), 11, "\"count\":1 ,");
+    bytes.replace(bytes.find("\"images\":"), 9, "\"meshes\":");
+    std::ofstream(strip, std::ios::binary | std::ios::trunc) << bytes;
+    CHECK_THAT(one_line_error(strip), Contains("the key \"meshes\" twice in one object"));
+  }
   std::string chunk = box;
   chunk[15] = '\x0d';  // the JSON chunk claims 200 MB
   std::ofstream(dir / "chunk.glb", std::ios::binary) << chunk;
