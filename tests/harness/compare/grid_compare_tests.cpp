@@ -217,6 +217,19 @@ TEST_CASE("merge: shards join into the unsharded grid, mismatched shards are ref
   const auto bad = merge_grids({stored(s0, context(), "s0"), stored(s1, other, "s1")});
   REQUIRE_FALSE(bad);
   CHECK(bad.error().message.find("commit") != std::string::npos);
+  // Shards run on different numbers of threads per event are not one grid.
+  GridResult threaded = s1;
+  threaded.threads = 2;
+  const auto mixed = merge_grids({stored(s0, context(), "s0"), stored(threaded, context(), "s1")});
+  REQUIRE_FALSE(mixed);
+  CHECK(mixed.error().message.find("threads") != std::string::npos);
+  // A file written before worker threads has no "threads": one thread.
+  auto older = grid_to_json(threaded, {{"name", "synthetic"}}, context());
+  REQUIRE(older.at("threads") == 2);
+  older.erase("threads");
+  const Result<StoredGrid> read_older = grid_results_from_json(older, "older");
+  REQUIRE(read_older);
+  CHECK(read_older->grid.threads == 1);
 }
 
 TEST_CASE("merge --repetitions: runs of the same cells join their samples, summaries recomputed", "[compare]") {
