@@ -84,9 +84,8 @@ void write_planar_corners(const AttributeLayout& layout, const Vec3& normal, con
   PlanarDressing(layout, normal, scale).write(p[0], p[1], p[2], out);
 }
 
-void write_cut_corners(const MeshAttributes& attr, const Vec3& outward_normal, const std::array<Vec3, 3>& p,
-                       double* out) {
-  write_planar_corners(attr.layout, outward_normal, p, attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0, out);
+PlanarDressing cut_face_dressing(const MeshAttributes& attr, const Vec3& outward_normal) {
+  return PlanarDressing(attr.layout, outward_normal, attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0);
 }
 
 void copy_attribute_frame(const Mesh& src, Mesh& dst) {
@@ -167,11 +166,11 @@ void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c,
   if (attr.empty()) return;
   if (!attr.slots.empty()) attr.materials.push_back(attr.cut.material);
   if (attr.layout.empty()) return;
-  const double scale = attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0;
-  append_planar_corners(attr, outward_normal,
-                        {dst.vertices[static_cast<std::size_t>(a)], dst.vertices[static_cast<std::size_t>(b)],
-                         dst.vertices[static_cast<std::size_t>(c)]},
-                        scale);
+  const std::size_t n = 3 * static_cast<std::size_t>(attr.layout.stride());
+  attr.corners.resize(attr.corners.size() + n);
+  cut_face_dressing(attr, outward_normal)
+      .write(dst.vertices[static_cast<std::size_t>(a)], dst.vertices[static_cast<std::size_t>(b)],
+             dst.vertices[static_cast<std::size_t>(c)], attr.corners.data() + attr.corners.size() - n);
 }
 
 double default_cut_uv_scale(const Mesh& mesh) {

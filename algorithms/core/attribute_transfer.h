@@ -62,11 +62,6 @@ void add_triangle_weighted(Mesh& dst, const Mesh& src, std::size_t f, std::int32
 /// dressed by `dst`'s cut-face style with `outward_normal` (any non-zero length) as the plane normal.
 void add_cut_triangle(Mesh& dst, std::int32_t a, std::int32_t b, std::int32_t c, const Vec3& outward_normal);
 
-/// Writes to `out` (3 x stride values) the corners of a cut face with positions `p` as add_cut_triangle
-/// dresses them: `attr`'s layout and cut-face UV scale, `outward_normal` (any non-zero length).
-void write_cut_corners(const MeshAttributes& attr, const Vec3& outward_normal, const std::array<Vec3, 3>& p,
-                       double* out);
-
 /// Writes to `out` (3 x stride values of `layout`) the corners of a planar face with normal `normal`
 /// at positions `p`, UVs at `scale` metres per unit: the cut-face dressing of the file comment.
 void write_planar_corners(const AttributeLayout& layout, const Vec3& normal, const std::array<Vec3, 3>& p, double scale,
@@ -93,6 +88,10 @@ class PlanarDressing {
   int uv_offset_ = 0;
   int uv_sets_ = 0;
 };
+
+/// The dressing add_cut_triangle gives cut faces of `attr` with `outward_normal` (any non-zero length):
+/// `attr`'s layout and cut-face UV scale (1 while the style is not prepared).
+[[nodiscard]] PlanarDressing cut_face_dressing(const MeshAttributes& attr, const Vec3& outward_normal);
 
 /// Orthonormal basis (e1, e2) of the plane with normal `normal`, built from its canonical normal (see
 /// the file comment): the same basis for `normal` and `-normal`.

@@ -49,8 +49,7 @@ std::int32_t CornerProvenance::mixed(std::int32_t parent, const std::array<Corne
 }
 
 std::int32_t CornerProvenance::cap(const Vec3& outward_normal) {
-  const MeshAttributes& attr = solid_.attributes;
-  cap_dressings_.emplace_back(attr.layout, outward_normal, attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0);
+  cap_dressings_.push_back(cut_face_dressing(solid_.attributes, outward_normal));
   return -static_cast<std::int32_t>(cap_dressings_.size());
 }
 
