@@ -1,5 +1,6 @@
 #include "harness/pipeline/physics/physics_world.h"
 #include "harness/pipeline/physics/collider_points.h"
+#include "harness/pipeline/physics/hull_pair_collision.h"
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
@@ -117,6 +118,7 @@ struct PhysicsWorld::Impl {
   PhysicsSettings settings;
   // Declaration order = construction order; members are destroyed in reverse (world first).
   btDefaultCollisionConfiguration configuration{pool_info(settings)};
+  HullPairCollision hull_pairs;  ///< outlives the dispatcher that points to it
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
@@ -128,6 +130,7 @@ struct PhysicsWorld::Impl {
   long steps = 0;
 
   explicit Impl(const PhysicsSettings& s) : settings(s) {
+    if (s.keep_separating_axes) hull_pairs.register_with(dispatcher);
     world.setGravity(to_bt(s.gravity));
     if (s.ground) {
       ground_shape = std::make_unique<btStaticPlaneShape>(btVector3(0, 0, 1), static_cast<btScalar>(s.ground_z));
@@ -422,6 +425,8 @@ bool PhysicsWorld::contains(int body) const {
 }
 
 int PhysicsWorld::body_count() const { return impl_->live; }
+
+const HullPairCounts& PhysicsWorld::hull_pair_counts() const { return impl_->hull_pairs.counts(); }
 
 int PhysicsWorld::overlapping_pairs() const {
   return impl_->broadphase.getOverlappingPairCache()->getNumOverlappingPairs();

@@ -17,6 +17,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/fracturer.h"
+#include "harness/pipeline/physics/hull_pair_collision.h"
 #include "harness/pipeline/workers.h"
 
 #include <Eigen/Core>
@@ -59,6 +60,9 @@ struct PhysicsSettings {
   /// of bounding boxes, so a scene's peak of pairs sized here moves that cost from the event's step
   /// into the world's creation. Changes no result. >= 1 (Bullet's default 4096).
   int contact_pool_size = 4096;
+  /// Pairs of hulls keep the axis that last proved them apart and skip GJK while it still does
+  /// (hull_pair_collision.h). Changes no result: the same contacts, bit for bit.
+  bool keep_separating_axes = true;
 };
 
 /// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, hull_optimize_above >= 0,
@@ -127,6 +131,9 @@ class PhysicsWorld {
   /// Pairs of bodies whose bounding boxes overlap (Bullet's broadphase pairs, each with a contact
   /// manifold: PhysicsSettings::contact_pool_size), as of the last step.
   [[nodiscard]] int overlapping_pairs() const;
+  /// The hull pair tests of all steps so far and how many a kept separating axis answered (zeros
+  /// when settings().keep_separating_axes is off).
+  [[nodiscard]] const HullPairCounts& hull_pair_counts() const;
   /// Number of step() calls so far.
   [[nodiscard]] long step_count() const;
   /// The settings the world was made with.

@@ -1,0 +1,159 @@
+#include "harness/pipeline/physics/hull_pair_collision.h"
+
+#include <btBulletCollisionCommon.h>
+#include <BulletCollision/CollisionDispatch/btConvexConvexAlgorithm.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
+#include <LinearMath/btPoolAllocator.h>
+
+#include <algorithm>
+#include <cmath>
+#include <new>
+
+namespace shatter {
+namespace {
+
+/// Largest and smallest of d . p over the hull's points (scaled as the shape scales them), in double.
+struct Extent {
+  double low;
+  double high;
+};
+
+Extent extent_along(const btConvexHullShape& hull, const btVector3& local_dir) {
+  const btVector3 d = local_dir * hull.getLocalScaling();
+  const double dx = d.x(), dy = d.y(), dz = d.z();
+  const btVector3* p = hull.getUnscaledPoints();
+  const int n = hull.getNumPoints();
+  double low = HUGE_VAL, high = -HUGE_VAL;
+  for (int i = 0; i < n; ++i) {
+    const double s = dx * p[i].x() + dy * p[i].y() + dz * p[i].z();
+    low = std::min(low, s);
+    high = std::max(high, s);
+  }
+  return {low, high};
+}
+
+/// The gap between the two hulls along the unit world axis `n` (from a towards b): min over b of n . x
+/// less max over a of n . x. A lower bound of their distance whenever it is positive.
+double gap_along(const btConvexHullShape& a, const btTransform& ta, const btConvexHullShape& b,
+                 const btTransform& tb, const btVector3& n) {
+  const double a_high = extent_along(a, n * ta.getBasis()).high + n.dot(ta.getOrigin());
+  const double b_low = extent_along(b, n * tb.getBasis()).low + n.dot(tb.getOrigin());
+  return b_low - a_high;
+}
+
+double largest_coordinate(const btVector3& v) {
+  return std::max({std::abs(static_cast<double>(v.x())), std::abs(static_cast<double>(v.y())),
+                   std::abs(static_cast<double>(v.z()))});
+}
+
+/// A GJK result sink: the probe wants the separating axis only.
+struct DiscardResult final : btDiscreteCollisionDetectorInterface::Result {
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3&, const btVector3&, btScalar) override {}
+};
+
+class HullPairAlgorithm final : public btConvexConvexAlgorithm {
+ public:
+  HullPairAlgorithm(const btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* w0,
+                    const btCollisionObjectWrapper* w1, const btConvexConvexAlgorithm::CreateFunc& bullet,
+                    HullPairCounts& counts)
+      : btConvexConvexAlgorithm(ci.m_manifold, ci, w0, w1, bullet.m_pdSolver, bullet.m_numPerturbationIterations,
+                                bullet.m_minimumPointsPerturbationThreshold),
+        counts_(counts) {}
+
+  void processCollision(const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
+                        const btDispatcherInfo& info, btManifoldResult* out) override {
+    ++counts_.tests;
+    // The manifold is Bullet's to make (first test of the pair); a pair with contact points is near.
+    auto* manifold = const_cast<btPersistentManifold*>(getManifold());
+    if (manifold != nullptr && manifold->getNumContacts() == 0 && proven_apart(w0, w1, *manifold, *out)) {
+      out->setPersistentManifold(manifold);  // what Bullet leaves behind for a pair beyond reach
+      return;
+    }
+    btConvexConvexAlgorithm::processCollision(w0, w1, info, out);
+  }
+
+ private:
+  /// True when the hulls are apart by more than both margins plus the manifold's contact breaking
+  /// threshold (Bullet's reach for a contact point), proven along the kept axis or along GJK's.
+  bool proven_apart(const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
+                    const btPersistentManifold& manifold, const btManifoldResult& out) {
+    const auto& a = *static_cast<const btConvexHullShape*>(w0->getCollisionShape());
+    const auto& b = *static_cast<const btConvexHullShape*>(w1->getCollisionShape());
+    const btTransform& ta = w0->getWorldTransform();
+    const btTransform& tb = w1->getWorldTransform();
+    const double reach = static_cast<double>(a.getMargin()) + b.getMargin() + manifold.getContactBreakingThreshold() +
+                         out.m_closestPointDistanceThreshold;
+    // Bullet computes in btScalar: allow for its round-off at these coordinates before trusting a gap.
+    const double scale = std::max({1.0, largest_coordinate(ta.getOrigin()), largest_coordinate(tb.getOrigin())});
+    const double needed = reach + 1e-4 + 2e-5 * scale;
+    if (has_axis_ && gap_along(a, ta, b, tb, axis_) > needed) {
+      ++counts_.skipped;
+      return true;
+    }
+    // The kept axis failed: Bullet's GJK (no penetration solver: only its axis is wanted) stops as soon
+    // as an axis shows the pair beyond reach; check that axis exactly and keep it.
+    btVoronoiSimplexSolver simplex;
+    btGjkPairDetector gjk(&a, &b, &simplex, nullptr);
+    btGjkPairDetector::ClosestPointInput input;
+    input.m_maximumDistanceSquared = static_cast<btScalar>(reach * reach);
+    input.m_transformA = ta;
+    input.m_transformB = tb;
+    DiscardResult discard;
+    gjk.getClosestPoints(input, discard, nullptr);
+    has_axis_ = false;
+    const btVector3 v = gjk.getCachedSeparatingAxis();
+    if (!(v.length2() > SIMD_EPSILON)) return false;
+    const btVector3 n = v.normalized();
+    for (const btVector3& axis : {n, -n}) {
+      if (gap_along(a, ta, b, tb, axis) > needed) {
+        axis_ = axis;
+        has_axis_ = true;
+        ++counts_.probed;
+        return true;
+      }
+    }
+    return false;
+  }
+
+  HullPairCounts& counts_;
+  btVector3 axis_{0, 0, 1};  ///< world, from the first body's hull towards the second's
+  bool has_axis_ = false;
+};
+
+}  // namespace
+
+struct HullPairCollision::CreateFunc final : btCollisionAlgorithmCreateFunc {
+  const btConvexConvexAlgorithm::CreateFunc* bullet = nullptr;  ///< the configuration's own, for its settings
+  int pool_element_size = 0;
+  HullPairCounts counts;
+
+  btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
+                                                 const btCollisionObjectWrapper* w0,
+                                                 const btCollisionObjectWrapper* w1) override {
+    // The dispatcher's pool holds elements of the largest built-in algorithm; a larger one is
+    // allocated apart (freeCollisionAlgorithm tells the two apart).
+    constexpr int size = static_cast<int>(sizeof(HullPairAlgorithm));
+    void* memory = size <= pool_element_size ? ci.m_dispatcher1->allocateCollisionAlgorithm(size)
+                                             : btAlignedAlloc(sizeof(HullPairAlgorithm), 16);
+    return new (memory) HullPairAlgorithm(ci, w0, w1, *bullet, counts);
+  }
+};
+
+HullPairCollision::HullPairCollision() : create_(new CreateFunc) {}
+
+HullPairCollision::~HullPairCollision() { delete create_; }
+
+void HullPairCollision::register_with(btCollisionDispatcher& dispatcher) {
+  btCollisionConfiguration* configuration = dispatcher.getCollisionConfiguration();
+  create_->bullet = static_cast<const btConvexConvexAlgorithm::CreateFunc*>(
+      configuration->getCollisionAlgorithmCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE));
+  create_->pool_element_size = configuration->getCollisionAlgorithmPool()->getElementSize();
+  dispatcher.registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, create_);
+}
+
+const HullPairCounts& HullPairCollision::counts() const { return create_->counts; }
+
+}  // namespace shatter

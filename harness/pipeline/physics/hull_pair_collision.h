@@ -1,0 +1,46 @@
+#pragma once
+// The contact test of two convex hulls, as Bullet's convex-convex algorithm does it, with a separating
+// axis kept per pair in front of it. Most pairs of a pile of pieces have overlapping bounding boxes but
+// are apart (the tower's event: 24,488 pairs, about 2,400 touching); Bullet runs GJK on each of them
+// every step. Here a pair without contact points first tries the axis that proved it apart last time,
+// two scans of the hull points; only when that fails does GJK run, and its separating axis is kept.
+//
+// The result is Bullet's own: a pair is skipped only when the hulls are proven apart by more than
+// both margins plus the contact breaking threshold (a lower bound from the support scans, with a
+// round-off allowance), and then Bullet's algorithm would add no contact point either (it drops every
+// point beyond that threshold) and would only refresh an empty manifold. The manifold itself is made
+// by Bullet's algorithm on the pair's first test and kept, so the manifolds and their order, the
+// solver's input, are the same: trajectories are identical bit for bit
+// (tests/harness/pipeline/physics/hull_pair_collision_tests.cpp).
+
+class btCollisionDispatcher;
+
+namespace shatter {
+
+/// How often the pair test ran and what it saved, summed over a world's steps.
+struct HullPairCounts {
+  long tests = 0;    ///< hull-hull pair tests (every step, every pair with overlapping boxes)
+  long skipped = 0;  ///< tests answered by a kept separating axis (no GJK)
+  long probed = 0;   ///< tests where the kept axis failed and GJK found a new one that proved the pair apart
+};
+
+/// The hull-hull pair test with kept separating axes, registered with a dispatcher for pairs of
+/// btConvexHullShape (the children of compound shapes included). Owns what the registration points to;
+/// keep it alive as long as the dispatcher.
+class HullPairCollision {
+ public:
+  HullPairCollision();
+  ~HullPairCollision();
+  HullPairCollision(const HullPairCollision&) = delete;
+  HullPairCollision& operator=(const HullPairCollision&) = delete;
+
+  /// Makes `dispatcher` use this test for every new pair of hulls.
+  void register_with(btCollisionDispatcher& dispatcher);
+  [[nodiscard]] const HullPairCounts& counts() const;
+
+ private:
+  struct CreateFunc;
+  CreateFunc* create_;
+};
+
+}  // namespace shatter
