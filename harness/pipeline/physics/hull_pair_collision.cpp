@@ -13,32 +13,23 @@
 namespace shatter {
 namespace {
 
-/// Largest and smallest of d . p over the hull's points (scaled as the shape scales them), in double.
-struct Extent {
-  double low;
-  double high;
-};
-
-Extent extent_along(const btConvexHullShape& hull, const btVector3& local_dir) {
+/// The largest of d . p over the hull's points (scaled as the shape scales them), in double.
+double highest_along(const btConvexHullShape& hull, const btVector3& local_dir) {
   const btVector3 d = local_dir * hull.getLocalScaling();
   const double dx = d.x(), dy = d.y(), dz = d.z();
   const btVector3* p = hull.getUnscaledPoints();
   const int n = hull.getNumPoints();
-  double low = HUGE_VAL, high = -HUGE_VAL;
-  for (int i = 0; i < n; ++i) {
-    const double s = dx * p[i].x() + dy * p[i].y() + dz * p[i].z();
-    low = std::min(low, s);
-    high = std::max(high, s);
-  }
-  return {low, high};
+  double high = -HUGE_VAL;
+  for (int i = 0; i < n; ++i) high = std::max(high, dx * p[i].x() + dy * p[i].y() + dz * p[i].z());
+  return high;
 }
 
 /// The gap between the two hulls along the unit world axis `n` (from a towards b): min over b of n . x
 /// less max over a of n . x. A lower bound of their distance whenever it is positive.
 double gap_along(const btConvexHullShape& a, const btTransform& ta, const btConvexHullShape& b,
                  const btTransform& tb, const btVector3& n) {
-  const double a_high = extent_along(a, n * ta.getBasis()).high + n.dot(ta.getOrigin());
-  const double b_low = extent_along(b, n * tb.getBasis()).low + n.dot(tb.getOrigin());
+  const double a_high = highest_along(a, n * ta.getBasis()) + n.dot(ta.getOrigin());
+  const double b_low = -highest_along(b, -n * tb.getBasis()) + n.dot(tb.getOrigin());
   return b_low - a_high;
 }
 

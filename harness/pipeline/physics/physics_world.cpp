@@ -1,6 +1,7 @@
 #include "harness/pipeline/physics/physics_world.h"
 #include "harness/pipeline/physics/collider_points.h"
 #include "harness/pipeline/physics/hull_pair_collision.h"
+#include "harness/pipeline/physics/tight_hull_shape.h"
 
 #include <btBulletDynamicsCommon.h>
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
@@ -13,6 +14,7 @@
 #include <cstdlib>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -210,6 +212,12 @@ struct PhysicsWorld::Impl {
     return points;
   }
 
+  /// An empty hull (or one of `count` points), with exact world boxes when the settings ask for them.
+  std::unique_ptr<btConvexHullShape> new_hull(const btScalar* points, int count) const {
+    if (settings.tight_bounds) return std::make_unique<TightHullShape>(points, count);
+    return std::make_unique<btConvexHullShape>(points, count);
+  }
+
   /// A convex hull of `fragment`'s vertices, inset by the collision margin (inset_points) so that
   /// neighbouring fragments that share a face start touching instead of interpenetrating, expressed in
   /// the body's principal frame (`centroid`, `axes`).
@@ -225,7 +233,7 @@ struct PhysicsWorld::Impl {
       for (const std::int32_t v : chosen) kept.push_back(points[static_cast<std::size_t>(v)]);
       points = std::move(kept);
     }
-    auto hull = std::make_unique<btConvexHullShape>();
+    std::unique_ptr<btConvexHullShape> hull = new_hull(nullptr, 0);
     for (const Vec3& p : points) hull->addPoint(to_bt(axes.transpose() * (p - centroid)), false);
     hull->recalcLocalAabb();
     // Keep only the hull's own vertices when that pays: Bullet's support mapping scans every point, so
@@ -235,8 +243,7 @@ struct PhysicsWorld::Impl {
     if (cap > 0 && hull->getNumPoints() > cap) {
       btShapeHull reduced(hull.get());
       reduced.buildHull(hull->getMargin());
-      hull = std::make_unique<btConvexHullShape>(reinterpret_cast<const btScalar*>(reduced.getVertexPointer()),
-                                                 reduced.numVertices());
+      hull = new_hull(reinterpret_cast<const btScalar*>(reduced.getVertexPointer()), reduced.numVertices());
     }
     hull->setMargin(static_cast<btScalar>(settings.collision_margin));
     return hull;
@@ -294,6 +301,7 @@ struct PhysicsWorld::Impl {
     info.m_friction = static_cast<btScalar>(settings.friction);
     info.m_restitution = static_cast<btScalar>(settings.restitution);
     b->rigid = std::make_unique<btRigidBody>(info);
+    b->rigid->setUserIndex(static_cast<int>(bodies.size()));  // the id, for touching_pairs()
     if (!settings.allow_sleeping) b->rigid->setActivationState(DISABLE_DEACTIVATION);
     b->in_world = in_world;
     if (in_world) {
@@ -427,6 +435,24 @@ bool PhysicsWorld::contains(int body) const {
 int PhysicsWorld::body_count() const { return impl_->live; }
 
 const HullPairCounts& PhysicsWorld::hull_pair_counts() const { return impl_->hull_pairs.counts(); }
+
+std::vector<TouchingPair> PhysicsWorld::touching_pairs() const {
+  std::vector<TouchingPair> out;
+  const btCollisionDispatcher& d = impl_->dispatcher;
+  for (int i = 0; i < d.getNumManifolds(); ++i) {
+    const btPersistentManifold* m = d.getManifoldByIndexInternal(i);
+    if (m->getNumContacts() == 0) continue;
+    const bool ground0 = m->getBody0() == impl_->ground.get(), ground1 = m->getBody1() == impl_->ground.get();
+    TouchingPair p{ground0 ? -1 : m->getBody0()->getUserIndex(), ground1 ? -1 : m->getBody1()->getUserIndex(),
+                   m->getNumContacts()};
+    if (p.first > p.second) std::swap(p.first, p.second);
+    out.push_back(p);
+  }
+  std::sort(out.begin(), out.end(), [](const TouchingPair& a, const TouchingPair& b) {
+    return std::tie(a.first, a.second, a.points) < std::tie(b.first, b.second, b.points);
+  });
+  return out;
+}
 
 int PhysicsWorld::overlapping_pairs() const {
   return impl_->broadphase.getOverlappingPairCache()->getNumOverlappingPairs();

@@ -63,6 +63,18 @@ struct PhysicsSettings {
   /// Pairs of hulls keep the axis that last proved them apart and skip GJK while it still does
   /// (hull_pair_collision.h). Changes no result: the same contacts, bit for bit.
   bool keep_separating_axes = true;
+  /// Each hull's bounding box is the exact world box of its points (tight_hull_shape.h), not the turned
+  /// box of its local one: fewer broadphase pairs, the same contacts (the solver meets them in
+  /// another order, so trajectories differ at round-off).
+  bool tight_bounds = true;
+};
+
+/// Two bodies in contact after a step, by id (the ground plane is -1), first < second.
+struct TouchingPair {
+  int first = 0;
+  int second = 0;
+  int points = 0;  ///< contact points between them
+  friend bool operator==(const TouchingPair&, const TouchingPair&) = default;
 };
 
 /// Checks `s`: finite values, fixed_step > 0, max_hull_vertices >= 0, hull_optimize_above >= 0,
@@ -134,6 +146,8 @@ class PhysicsWorld {
   /// The hull pair tests of all steps so far and how many a kept separating axis answered (zeros
   /// when settings().keep_separating_axes is off).
   [[nodiscard]] const HullPairCounts& hull_pair_counts() const;
+  /// The pairs of bodies with contact points after the last step, sorted.
+  [[nodiscard]] std::vector<TouchingPair> touching_pairs() const;
   /// Number of step() calls so far.
   [[nodiscard]] long step_count() const;
   /// The settings the world was made with.
