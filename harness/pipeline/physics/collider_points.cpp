@@ -26,6 +26,24 @@ Vec3 fibonacci_direction(int k, int n) {
   return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
+/// The directions after the cube's for a budget: a spherical Fibonacci set of 8 x budget points in a
+/// strided order (a step coprime with n near n / phi^2), so that every prefix is spread from pole to
+/// pole. The same for every piece: made once per budget and thread (pieces are planned on workers).
+const std::vector<Vec3>& fill_directions(int budget) {
+  thread_local std::vector<Vec3> directions;
+  thread_local int made_for = -1;
+  if (made_for != budget) {
+    const int n = 8 * budget;
+    int step = std::max(1, static_cast<int>(n * 0.3819660112501051));
+    while (std::gcd(step, n) != 1) ++step;
+    directions.clear();
+    for (int j = 0; j < n; ++j)
+      directions.push_back(fibonacci_direction(static_cast<int>((static_cast<long>(j) * step) % n), n));
+    made_for = budget;
+  }
+  return directions;
+}
+
 }  // namespace
 
 std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, int budget) {
@@ -57,13 +75,11 @@ std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, i
     take_extreme(Vec3(d[0], d[1], d[2]));
   }
   // More directions until the budget is filled (a few points may be extreme along none of them,
-  // which leaves the collider under its budget). The set's points are taken in a strided order (a
-  // step coprime with n near n / phi^2), so that every prefix is spread from pole to pole.
-  const int n = 8 * budget;
-  int step = std::max(1, static_cast<int>(n * 0.3819660112501051));
-  while (std::gcd(step, n) != 1) ++step;
-  for (int j = 0; j < n && static_cast<int>(out.size()) < budget; ++j)
-    take_extreme(fibonacci_direction(static_cast<int>((static_cast<long>(j) * step) % n), n));
+  // which leaves the collider under its budget).
+  for (const Vec3& d : fill_directions(budget)) {
+    if (static_cast<int>(out.size()) >= budget) break;
+    take_extreme(d);
+  }
   return out;
 }
 

@@ -62,3 +62,42 @@ TEST_CASE("collider points: a budget above the cube's directions fills up with m
   CHECK(chosen.size() > 26);
   CHECK(chosen.size() <= 48);
 }
+
+namespace {
+
+/// The rule as stated, point by point: along each direction the first point with the largest d . p.
+std::vector<std::int32_t> extremes_by_definition(const std::vector<Vec3>& points, const std::vector<Vec3>& directions,
+                                                 std::size_t budget) {
+  std::vector<std::int32_t> out;
+  for (const Vec3& d : directions) {
+    if (out.size() >= budget) break;
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < points.size(); ++i)
+      if (d.dot(points[i]) > d.dot(points[best])) best = i;
+    if (std::find(out.begin(), out.end(), static_cast<std::int32_t>(best)) == out.end())
+      out.push_back(static_cast<std::int32_t>(best));
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("collider points: each cube direction takes the first of its farthest points, ties included",
+          "[physics][colliders]") {
+  // A 4 x 4 x 4 grid of points (many ties along every cube direction) in a shuffled order, and a
+  // sphere: with a budget of 26 only the cube's directions choose, so the choice is known point by point.
+  std::vector<Vec3> grid;
+  for (int i = 0; i < 64; ++i) grid.emplace_back((i * 7) % 4, (i * 13 / 4) % 4, (i * 5 / 16) % 4);
+  const Mesh sphere = make_sphere(1.0, 24, 12, Vec3(0.1, 0.2, 0.3));
+  std::vector<Vec3> cube_directions;
+  for (const std::array<double, 3> d :
+       {std::array<double, 3>{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {1, 1, 1},
+        {-1, -1, -1}, {1, 1, -1}, {-1, -1, 1}, {1, -1, 1}, {-1, 1, -1}, {-1, 1, 1}, {1, -1, -1}, {1, 1, 0},
+        {-1, -1, 0}, {1, -1, 0}, {-1, 1, 0}, {1, 0, 1}, {-1, 0, -1}, {1, 0, -1}, {-1, 0, 1}, {0, 1, 1},
+        {0, -1, -1}, {0, 1, -1}, {0, -1, 1}})
+    cube_directions.emplace_back(d[0], d[1], d[2]);
+  for (const std::vector<Vec3>& points : {grid, sphere.vertices}) {
+    CHECK(collider_point_indices(points, 26) == extremes_by_definition(points, cube_directions, 26));
+    CHECK(collider_point_indices(points, 10) == extremes_by_definition(points, cube_directions, 10));
+  }
+}
