@@ -55,8 +55,9 @@ struct RunState {
   std::vector<std::uint8_t> standing;   ///< per fragment: 1 while part of the held structure
   std::vector<std::uint8_t> anchored;   ///< per fragment: 1 when it overlaps an anchor region
   std::vector<int> static_body;         ///< per fragment: its static body in the world, or -1
+  Workers workers;                      ///< the threads of the event's fractures and colliders and of
+                                        ///< the steps' narrow phase (before the world: outlives it)
   std::unique_ptr<PhysicsWorld> world;  ///< the physics world (none when colliders are not needed)
-  Workers workers;                      ///< the threads of the event's fractures and colliders
 
   int frame = 0;                        ///< the frame being run (setup: 0)
   std::vector<FadingPiece> fading;      ///< runtime pieces fading out, in the order they entered

@@ -7,6 +7,7 @@
 #include <LinearMath/btPoolAllocator.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <new>
 
@@ -45,18 +46,26 @@ struct DiscardResult final : btDiscreteCollisionDetectorInterface::Result {
   void addContactPoint(const btVector3&, const btVector3&, btScalar) override {}
 };
 
+/// The counts of HullPairCounts, kept by the tests of pairs on any thread (a step's narrow phase can run
+/// on workers: narrow_phase_dispatcher.h).
+struct SharedCounts {
+  std::atomic<long> tests{0};
+  std::atomic<long> skipped{0};
+  std::atomic<long> probed{0};
+};
+
 class HullPairAlgorithm final : public btConvexConvexAlgorithm {
  public:
   HullPairAlgorithm(const btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* w0,
                     const btCollisionObjectWrapper* w1, const btConvexConvexAlgorithm::CreateFunc& bullet,
-                    HullPairCounts& counts)
+                    SharedCounts& counts)
       : btConvexConvexAlgorithm(ci.m_manifold, ci, w0, w1, bullet.m_pdSolver, bullet.m_numPerturbationIterations,
                                 bullet.m_minimumPointsPerturbationThreshold),
         counts_(counts) {}
 
   void processCollision(const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
                         const btDispatcherInfo& info, btManifoldResult* out) override {
-    ++counts_.tests;
+    counts_.tests.fetch_add(1, std::memory_order_relaxed);
     // The manifold is Bullet's to make (first test of the pair); a pair with contact points is near.
     auto* manifold = const_cast<btPersistentManifold*>(getManifold());
     if (manifold != nullptr && manifold->getNumContacts() == 0 && proven_apart(w0, w1, *manifold, *out)) {
@@ -81,7 +90,7 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
     const double scale = std::max({1.0, largest_coordinate(ta.getOrigin()), largest_coordinate(tb.getOrigin())});
     const double needed = reach + 1e-4 + 2e-5 * scale;
     if (has_axis_ && gap_along(a, ta, b, tb, axis_) > needed) {
-      ++counts_.skipped;
+      counts_.skipped.fetch_add(1, std::memory_order_relaxed);
       return true;
     }
     // The kept axis failed: Bullet's GJK (no penetration solver: only its axis is wanted) stops as soon
@@ -102,14 +111,14 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
       if (gap_along(a, ta, b, tb, axis) > needed) {
         axis_ = axis;
         has_axis_ = true;
-        ++counts_.probed;
+        counts_.probed.fetch_add(1, std::memory_order_relaxed);
         return true;
       }
     }
     return false;
   }
 
-  HullPairCounts& counts_;
+  SharedCounts& counts_;
   btVector3 axis_{0, 0, 1};  ///< world, from the first body's hull towards the second's
   bool has_axis_ = false;
 };
@@ -119,7 +128,7 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
 struct HullPairCollision::CreateFunc final : btCollisionAlgorithmCreateFunc {
   const btConvexConvexAlgorithm::CreateFunc* bullet = nullptr;  ///< the configuration's own, for its settings
   int pool_element_size = 0;
-  HullPairCounts counts;
+  SharedCounts counts;
 
   btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& ci,
                                                  const btCollisionObjectWrapper* w0,
@@ -145,6 +154,8 @@ void HullPairCollision::register_with(btCollisionDispatcher& dispatcher) {
   dispatcher.registerCollisionCreateFunc(CONVEX_HULL_SHAPE_PROXYTYPE, CONVEX_HULL_SHAPE_PROXYTYPE, create_);
 }
 
-const HullPairCounts& HullPairCollision::counts() const { return create_->counts; }
+HullPairCounts HullPairCollision::counts() const {
+  return {create_->counts.tests.load(), create_->counts.skipped.load(), create_->counts.probed.load()};
+}
 
 }  // namespace shatter

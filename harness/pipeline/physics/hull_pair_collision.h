@@ -36,7 +36,8 @@ class HullPairCollision {
 
   /// Makes `dispatcher` use this test for every new pair of hulls.
   void register_with(btCollisionDispatcher& dispatcher);
-  [[nodiscard]] const HullPairCounts& counts() const;
+  /// The counts so far (safe to read between steps).
+  [[nodiscard]] HullPairCounts counts() const;
 
  private:
   struct CreateFunc;

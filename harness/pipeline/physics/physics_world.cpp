@@ -1,6 +1,7 @@
 #include "harness/pipeline/physics/physics_world.h"
 #include "harness/pipeline/physics/collider_points.h"
 #include "harness/pipeline/physics/hull_pair_collision.h"
+#include "harness/pipeline/physics/narrow_phase_dispatcher.h"
 #include "harness/pipeline/physics/tight_hull_shape.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -121,7 +122,7 @@ struct PhysicsWorld::Impl {
   // Declaration order = construction order; members are destroyed in reverse (world first).
   btDefaultCollisionConfiguration configuration{pool_info(settings)};
   HullPairCollision hull_pairs;  ///< outlives the dispatcher that points to it
-  btCollisionDispatcher dispatcher{&configuration};
+  NarrowPhaseDispatcher dispatcher{&configuration};
   btDbvtBroadphase broadphase;
   btSequentialImpulseConstraintSolver solver;
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
@@ -434,7 +435,9 @@ bool PhysicsWorld::contains(int body) const {
 
 int PhysicsWorld::body_count() const { return impl_->live; }
 
-const HullPairCounts& PhysicsWorld::hull_pair_counts() const { return impl_->hull_pairs.counts(); }
+HullPairCounts PhysicsWorld::hull_pair_counts() const { return impl_->hull_pairs.counts(); }
+
+void PhysicsWorld::set_workers(Workers* workers) { impl_->dispatcher.set_workers(workers); }
 
 std::vector<TouchingPair> PhysicsWorld::touching_pairs() const {
   std::vector<TouchingPair> out;

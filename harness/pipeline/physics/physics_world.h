@@ -123,6 +123,10 @@ class PhysicsWorld {
   void apply_impulse(int body, const Vec3& impulse_Ns, const Vec3& world_point);
   /// Advances the world by one fixed step (settings().fixed_step seconds, no sub-stepping).
   void step();
+  /// Runs the narrow phase of the next steps on `workers` (none: on the calling thread). The same
+  /// contacts and trajectories, bit for bit, on any number of threads (narrow_phase_dispatcher.h).
+  /// `workers` must outlive the world or be replaced first.
+  void set_workers(Workers* workers);
 
   /// World position of the body's centroid, m.
   [[nodiscard]] Vec3 position(int body) const;
@@ -145,7 +149,7 @@ class PhysicsWorld {
   [[nodiscard]] int overlapping_pairs() const;
   /// The hull pair tests of all steps so far and how many a kept separating axis answered (zeros
   /// when settings().keep_separating_axes is off).
-  [[nodiscard]] const HullPairCounts& hull_pair_counts() const;
+  [[nodiscard]] HullPairCounts hull_pair_counts() const;
   /// The pairs of bodies with contact points after the last step, sorted.
   [[nodiscard]] std::vector<TouchingPair> touching_pairs() const;
   /// Number of step() calls so far.

@@ -96,6 +96,7 @@ void build_world(RunState& run) {
   settings.hull_vertex_budget = run.spec.colliders.vertex_budget;
   settings.contact_pool_size = contact_pool_size(run);
   run.world = std::make_unique<PhysicsWorld>(settings);
+  run.world->set_workers(&run.workers);
   const double density = run.spec.material.density;
   run.static_body.assign(r.fragments.size(), -1);
   for (std::size_t f = 0; f < r.fragments.size(); ++f) {

@@ -1,11 +1,13 @@
 // The hull pair test with kept separating axes (hull_pair_collision.h) answers most tests of a pile
 // of falling pieces without GJK, and changes no trajectory: every body's position and rotation in
-// every step is the same, bit for bit, as with Bullet's own convex-convex test.
+// every step is the same, bit for bit, as with Bullet's own convex-convex test. The narrow phase on
+// worker threads (narrow_phase_dispatcher.h) changes none either.
 
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/primitives.h"
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "harness/pipeline/physics/physics_world.h"
+#include "harness/pipeline/workers.h"
 
 #include <catch2/catch.hpp>
 
@@ -46,11 +48,13 @@ struct Run {
 
 /// Sixty slabs of a 2 x 1 x 1 m block spread apart and dropped, four of them knocked, with a compound
 /// of three pieces of another block falling onto them, on the ground and on a static pedestal.
-Run drop_pile(bool keep_axes) {
+Run drop_pile(bool keep_axes, int threads = 1) {
   PhysicsSettings s;
   s.ground = true;
   s.keep_separating_axes = keep_axes;
+  shatter::Workers workers(threads);
   PhysicsWorld world(s);
+  world.set_workers(&workers);
   std::vector<int> ids;
   ids.push_back(world.add_fragment(spread_out(slices(Vec3(1, 1, 0.4), 1, 1)[0], 1.0, Vec3(0, 0, 0.2)), 2400.0, true));
   const std::vector<Fragment> pieces = slices(Vec3(2, 1, 1), 60, 7);
@@ -94,4 +98,20 @@ TEST_CASE("hull pairs: kept separating axes skip most tests and change no trajec
   // The pieces fell and met: the comparison is of bodies in motion and in contact.
   CHECK(bullet.peak_pairs > 200);
   CHECK((bullet.positions.back() - bullet.positions[bullet.positions.size() / 150 - 1]).norm() > 0.5);
+}
+
+TEST_CASE("hull pairs: the narrow phase on worker threads changes no trajectory", "[physics][threads]") {
+  const Run one = drop_pile(true, 1);
+  for (const int threads : {2, 3}) {
+    INFO(threads << " threads");
+    const Run many = drop_pile(true, threads);
+    CHECK(many.counts.tests == one.counts.tests);
+    CHECK(many.counts.skipped == one.counts.skipped);
+    CHECK(many.counts.probed == one.counts.probed);
+    CHECK(many.peak_pairs == one.peak_pairs);
+    CHECK(many.positions == one.positions);
+    CHECK(many.rotations == one.rotations);
+  }
+  // Bullet's own pair test on workers as well.
+  CHECK(drop_pile(false, 2).positions == drop_pile(false, 1).positions);
 }
