@@ -356,8 +356,8 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
   cmd->add_flag("--same-seed", o->same_seed,
                 "Every repetition repeats the case's seed (the same workload): for regression gates");
   cmd->add_option("--threads", o->threads,
-                  "Threads of each runtime event: its hit fragments' fractures and its pieces' colliders run "
-                  "on this many at once (default 1, single-threaded as the seed measured)");
+                  "Threads of each run: the runtime event's fractures and colliders and each physics step's "
+                  "pair tests run on this many at once (default 1, single-threaded as the seed measured)");
   cmd->add_flag("--no-skip", o->no_skip, "Turn every automatic stage skip off (cache, box culling, partial re-solves)");
   cmd->add_option("--schedule", o->schedule,
                   "Schedule of the runtime event: immediate, prefetch or amortized (default: the case's schedule.mode)");
