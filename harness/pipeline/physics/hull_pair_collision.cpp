@@ -93,8 +93,20 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
       counts_.skipped.fetch_add(1, std::memory_order_relaxed);
       return true;
     }
-    // The kept axis failed: Bullet's GJK (no penetration solver: only its axis is wanted) stops as soon
-    // as an axis shows the pair beyond reach; check that axis exactly and keep it.
+    // The kept axis failed (or there is none yet): first the line between the two bodies' centres,
+    // which separates most pairs of pieces that are apart, for two more scans.
+    const btVector3 centres = tb.getOrigin() - ta.getOrigin();
+    if (centres.length2() > SIMD_EPSILON) {
+      const btVector3 n = centres.normalized();
+      if (gap_along(a, ta, b, tb, n) > needed) {
+        axis_ = n;
+        has_axis_ = true;
+        counts_.probed.fetch_add(1, std::memory_order_relaxed);
+        return true;
+      }
+    }
+    // Then Bullet's GJK (no penetration solver: only its axis is wanted), which stops as soon as an
+    // axis shows the pair beyond reach; check that axis exactly and keep it.
     btVoronoiSimplexSolver simplex;
     btGjkPairDetector gjk(&a, &b, &simplex, nullptr);
     btGjkPairDetector::ClosestPointInput input;
