@@ -109,16 +109,20 @@ TEST_CASE("cli: grid reports the schedule and latency per cell and gates on the 
   const auto dir = scratch("latency");
   const auto json = dir / "grid.json";
   const std::string cell = " --repetitions 1 --frames 12 --prefracture 10 --runtime 5 --no-cache --json " + json.string();
+  // The default latency budget (50 ms) with the frame budget out of reach: whether the cell is within
+  // it depends on how fast this machine runs three frames, so the test checks that the gate's
+  // verdict, the exit code and the figure agree.
   const auto ok = run_cli("grid --case building --schedule prefetch --budget-ms 100000" + cell);
   INFO(ok.err);
-  REQUIRE(ok.exit_code == 0);
   const auto j = nlohmann::json::parse(slurp(json));
   REQUIRE(j.at("latency_budget_ms").get<double>() == 50.0);
   const auto& c = j.at("cells")[0];
   REQUIRE(c.at("schedule") == "prefetch");
   REQUIRE(c.at("latency_frames").get<double>() == 3.0);  // the case's prefetch_frames (2) + the impact frame
   REQUIRE(c.at("samples")[0].at("latency_after_impact_frames") == 0);
-  REQUIRE(c.at("within_latency_budget").get<bool>());
+  const bool within = c.at("latency_ms").get<double>() <= 50.0;
+  REQUIRE(c.at("within_latency_budget").get<bool>() == within);
+  REQUIRE(ok.exit_code == (within ? 0 : 1));
   REQUIRE(c.contains("bodies_peak"));
   REQUIRE(c.at("stages_ms").contains("debris"));
   REQUIRE(slurp(dir / "grid.csv").find("latency_ms") != std::string::npos);
@@ -207,9 +211,10 @@ TEST_CASE("cli: grid refuses a bad --timeout with exit 2, one line, and writes n
 
 TEST_CASE("cli: grid --threads records its threads and gives the same outcome as one thread", "[cli][grid][threads]") {
   const auto dir = scratch("threads");
-  // The frame budget is out of reach: this test is about the outcome, not the time of a frame.
+  // The frame and latency budgets are out of reach: this test is about the outcome, not the time of a frame.
   const std::string cell =
-      "grid --case tower --repetitions 1 --frames 12 --prefracture 30 --runtime 5 --no-cache --budget-ms 100000";
+      "grid --case tower --repetitions 1 --frames 12 --prefracture 30 --runtime 5 --no-cache --budget-ms 100000 "
+      "--latency-budget-ms 100000";
   std::vector<nlohmann::json> samples;
   for (const int threads : {1, 2}) {
     const auto json = dir / ("grid-" + std::to_string(threads) + ".json");
