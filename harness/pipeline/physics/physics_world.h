@@ -64,8 +64,8 @@ struct PhysicsSettings {
   /// (hull_pair_collision.h). Changes no result: the same contacts, bit for bit.
   bool keep_separating_axes = true;
   /// Each hull's bounding box is the exact world box of its points (tight_hull_shape.h), not the turned
-  /// box of its local one: fewer broadphase pairs, the same contacts (the solver meets them in
-  /// another order, so trajectories differ at round-off).
+  /// box of its local one: fewer broadphase pairs, the same contacts. The solver meets them in another
+  /// order, so trajectories differ as they do when Bullet gets the same bodies in another order.
   bool tight_bounds = true;
 };
 
