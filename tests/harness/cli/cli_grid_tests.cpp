@@ -162,7 +162,7 @@ TEST_CASE("cli: grid --timeout fails a cell that runs too long and goes on with 
   // family of benchmarks/fracture_benchmarks.cpp).
   const auto r = run_cli(
       "grid --case building --prefracture 20000,10 --runtime 5 --repetitions 1 --frames 2 "
-      "--no-cache --timeout 2 --budget-ms 100000 --json " +
+      "--no-cache --timeout 2 --budget-ms 100000 --latency-budget-ms 100000 --json " +
       json.string());
   INFO(r.err);
   REQUIRE(r.exit_code == 1);
