@@ -95,18 +95,11 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
     }
     // The kept axis failed (or there is none yet): first the line between the two bodies' centres,
     // which separates most pairs of pieces that are apart, for two more scans.
+    has_axis_ = false;
     const btVector3 centres = tb.getOrigin() - ta.getOrigin();
-    if (centres.length2() > SIMD_EPSILON) {
-      const btVector3 n = centres.normalized();
-      if (gap_along(a, ta, b, tb, n) > needed) {
-        axis_ = n;
-        has_axis_ = true;
-        counts_.probed.fetch_add(1, std::memory_order_relaxed);
-        return true;
-      }
-    }
+    if (centres.length2() > SIMD_EPSILON && keep_if_apart(centres.normalized(), a, ta, b, tb, needed)) return true;
     // Then Bullet's GJK (no penetration solver: only its axis is wanted), which stops as soon as an
-    // axis shows the pair beyond reach; check that axis exactly and keep it.
+    // axis shows the pair beyond reach; check that axis exactly, either way round, and keep it.
     btVoronoiSimplexSolver simplex;
     btGjkPairDetector gjk(&a, &b, &simplex, nullptr);
     btGjkPairDetector::ClosestPointInput input;
@@ -115,19 +108,20 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
     input.m_transformB = tb;
     DiscardResult discard;
     gjk.getClosestPoints(input, discard, nullptr);
-    has_axis_ = false;
     const btVector3 v = gjk.getCachedSeparatingAxis();
     if (!(v.length2() > SIMD_EPSILON)) return false;
     const btVector3 n = v.normalized();
-    for (const btVector3& axis : {n, -n}) {
-      if (gap_along(a, ta, b, tb, axis) > needed) {
-        axis_ = axis;
-        has_axis_ = true;
-        counts_.probed.fetch_add(1, std::memory_order_relaxed);
-        return true;
-      }
-    }
-    return false;
+    return keep_if_apart(n, a, ta, b, tb, needed) || keep_if_apart(-n, a, ta, b, tb, needed);
+  }
+
+  /// Keeps the unit axis `n` (from a towards b) when the hulls' gap along it exceeds `needed`.
+  bool keep_if_apart(const btVector3& n, const btConvexHullShape& a, const btTransform& ta,
+                     const btConvexHullShape& b, const btTransform& tb, double needed) {
+    if (!(gap_along(a, ta, b, tb, n) > needed)) return false;
+    axis_ = n;
+    has_axis_ = true;
+    counts_.probed.fetch_add(1, std::memory_order_relaxed);
+    return true;
   }
 
   SharedCounts& counts_;

@@ -1,9 +1,9 @@
 #pragma once
 // The contact test of two convex hulls, as Bullet's convex-convex algorithm does it, with a separating
 // axis kept per pair in front of it. Most pairs of a pile of pieces have overlapping bounding boxes but
-// are apart (the tower's event: 24,488 pairs, about 2,400 touching); Bullet runs GJK on each of them
-// every step. Here a pair without contact points first tries the axis that proved it apart last time,
-// two scans of the hull points; only when that fails does GJK run, and its separating axis is kept.
+// are apart; Bullet runs GJK on each of them every step. Here a pair without contact points first
+// tries the axis that proved it apart last time, two scans of the hull points; when that fails, the
+// line between the bodies' centres, then GJK, and the axis that works is kept.
 //
 // The result is Bullet's own: a pair is skipped only when the hulls are proven apart by more than
 // both margins plus the contact breaking threshold (a lower bound from the support scans, with a
@@ -21,7 +21,7 @@ namespace shatter {
 struct HullPairCounts {
   long tests = 0;    ///< hull-hull pair tests (every step, every pair with overlapping boxes)
   long skipped = 0;  ///< tests answered by a kept separating axis (no GJK)
-  long probed = 0;   ///< tests where the kept axis failed and GJK found a new one that proved the pair apart
+  long probed = 0;   ///< tests where the kept axis failed and a new one (the centres' line or GJK's) proved the pair apart
 };
 
 /// The hull-hull pair test with kept separating axes, registered with a dispatcher for pairs of
