@@ -99,8 +99,9 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
                          cell(p.figures, "mean_volume_loss"), cell(p.figures, "mean_points"), front_text(p));
     }
     out += "\ntime = building every piece's collider (median of the repetitions); volume cut off = 1 - V(hull of "
-           "the budget's points) / V(hull of all the piece's points), per piece; vertex_budget=0 is the exact "
-           "path; front = Pareto front per case\n";
+           "the collider's points) / V(hull of all the piece's points), per piece; every_point is the exact path, "
+           "the budgets drop the points that cannot be hull corners first, as the pipeline does; front = "
+           "Pareto front per case\n";
   }
   return out;
 }

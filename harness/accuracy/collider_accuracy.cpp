@@ -1,7 +1,7 @@
 #include "harness/accuracy/collider_accuracy.h"
 
 #include "harness/pipeline/physics/collider_points.h"
-#include "harness/pipeline/physics/convex_hull_volume.h"
+#include "algorithms/core/convex_hull_volume.h"
 #include "harness/pipeline/physics/physics_world.h"
 
 #include <fmt/core.h>
@@ -9,12 +9,14 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <utility>
 
 namespace shatter {
 namespace {
 
-/// The figures of one budget over `pieces`.
-nlohmann::ordered_json shape_figures(const std::vector<Fragment>& pieces, int budget, double& max_loss) {
+/// The figures of one collider setting over `pieces`.
+nlohmann::ordered_json shape_figures(const std::vector<Fragment>& pieces, bool drop_inner_points, int budget,
+                                     double& max_loss) {
   double sum_loss = 0.0;
   double sum_points = 0.0;
   max_loss = 0.0;
@@ -22,11 +24,12 @@ nlohmann::ordered_json shape_figures(const std::vector<Fragment>& pieces, int bu
     const std::vector<Vec3>& all = piece.mesh.vertices;
     const double full = convex_hull_volume(all);
     std::vector<Vec3> kept;
-    if (budget > 0)
-      for (const std::int32_t v : collider_point_indices(all, budget)) kept.push_back(all[static_cast<std::size_t>(v)]);
-    else
-      kept = all;
-    const double loss = full > 0.0 ? std::clamp(1.0 - convex_hull_volume(kept) / full, 0.0, 1.0) : 0.0;
+    for (const std::int32_t v : collider_vertex_indices(piece.mesh, vertex_planes(piece.mesh), drop_inner_points, budget))
+      kept.push_back(all[static_cast<std::size_t>(v)]);
+    // Every point kept is the hull itself (computed again, it could differ in the last bit).
+    const double loss = full > 0.0 && kept.size() < all.size()
+                            ? std::clamp(1.0 - convex_hull_volume(kept) / full, 0.0, 1.0)
+                            : 0.0;
     max_loss = std::max(max_loss, loss);
     sum_loss += loss;
     sum_points += static_cast<double>(kept.size());
@@ -54,13 +57,20 @@ Result<std::vector<AccuracyPoint>> collider_accuracy(const std::string& case_nam
     params.fragments = n;
     params.seed = 1;
     Result<std::vector<Fragment>> pieces = (*f)->fracture(solid.mesh, params);
-    for (const int budget : options.budgets) {
+    // Every budget as the pipeline builds colliders (inner points dropped), and the exact path: every
+    // point of the piece, no budget.
+    std::vector<std::pair<bool, int>> settings_list;
+    for (const int budget : options.budgets) settings_list.emplace_back(true, budget);
+    settings_list.emplace_back(false, 0);
+    for (const auto& [drop_inner, budget] : settings_list) {
       AccuracyPoint p;
       p.family = "colliders";
       p.case_name = case_name;
       p.algorithm = "hull";
-      p.knobs = {{"fragments", n}, {"fracturer", fracturer}, {"vertex_budget", budget}};
-      p.knob = fmt::format("fragments={} vertex_budget={}", n, budget);
+      p.knobs = {{"fragments", n}, {"fracturer", fracturer}, {"vertex_budget", budget},
+                 {"drop_inner_points", drop_inner}};
+      p.knob = drop_inner ? fmt::format("fragments={} vertex_budget={}", n, budget)
+                          : fmt::format("fragments={} every_point", n);
       if (!pieces) {
         p.time_ms = std::numeric_limits<double>::quiet_NaN();
         p.figures = {{"failed", pieces.error().message}};
@@ -70,6 +80,7 @@ Result<std::vector<AccuracyPoint>> collider_accuracy(const std::string& case_nam
       PhysicsSettings settings;
       settings.max_hull_vertices = 64;  // as the pipeline builds its world
       settings.hull_vertex_budget = budget;
+      settings.drop_inner_points = drop_inner;
       for (int rep = 0; rep < options.repetitions; ++rep) {
         PhysicsWorld world(settings);
         const auto t0 = std::chrono::steady_clock::now();
@@ -79,7 +90,7 @@ Result<std::vector<AccuracyPoint>> collider_accuracy(const std::string& case_nam
       }
       p.time_ms = median_of(p.samples_ms);
       double max_loss = 0.0;
-      p.figures = shape_figures(*pieces, budget, max_loss);
+      p.figures = shape_figures(*pieces, drop_inner, budget, max_loss);
       p.error = max_loss;
       points.push_back(std::move(p));
     }

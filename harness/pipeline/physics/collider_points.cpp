@@ -83,4 +83,22 @@ std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, i
   return out;
 }
 
+std::vector<std::int32_t> collider_vertex_indices(const Mesh& mesh, const VertexPlanes& planes,
+                                                  bool drop_inner_points, int budget) {
+  std::vector<std::int32_t> chosen;
+  if (drop_inner_points) {
+    chosen = outer_point_indices(mesh, planes);
+  } else {
+    chosen.resize(mesh.vertices.size());
+    std::iota(chosen.begin(), chosen.end(), 0);
+  }
+  if (budget <= 0) return chosen;
+  std::vector<Vec3> candidates;
+  candidates.reserve(chosen.size());
+  for (const std::int32_t v : chosen) candidates.push_back(mesh.vertices[static_cast<std::size_t>(v)]);
+  std::vector<std::int32_t> within;
+  for (const std::int32_t k : collider_point_indices(candidates, budget)) within.push_back(chosen[static_cast<std::size_t>(k)]);
+  return within;
+}
+
 }  // namespace shatter

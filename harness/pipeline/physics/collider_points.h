@@ -11,6 +11,7 @@
 /// the error is volume lost at the corners it cuts off (accuracy's collider figures).
 
 #include "algorithms/core/mesh.h"
+#include "harness/pipeline/physics/outer_points.h"
 
 #include <cstdint>
 #include <span>
@@ -22,5 +23,11 @@ namespace shatter {
 /// directions above (the first such point on a tie), distinct, in the order their directions come.
 /// Every index, in order, when there are `budget` points or fewer.
 [[nodiscard]] std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, int budget);
+
+/// The vertices of `mesh` its collider is made of: those outer_point_indices keeps (every vertex when
+/// `drop_inner_points` is false), then at most `budget` of them by collider_point_indices (0: all of
+/// them). `planes` is vertex_planes(mesh).
+[[nodiscard]] std::vector<std::int32_t> collider_vertex_indices(const Mesh& mesh, const VertexPlanes& planes,
+                                                                bool drop_inner_points, int budget);
 
 }  // namespace shatter

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <span>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -156,59 +157,45 @@ struct PhysicsWorld::Impl {
     return *bodies[id];
   }
 
-  /// The fragment's vertices moved inward so that its hull plus the collision margin is the fragment
-  /// again: each vertex moves by the d with n . d = -margin for every distinct plane n of its faces
-  /// (least squares, minimum norm: exact for a corner of three planes, on an edge or in a face it
-  /// moves along the shared normals only). Each move is capped at half the vertex's distance from the
-  /// centroid, so a needle corner cannot be pushed through the fragment.
-  std::vector<Vec3> inset_points(const Fragment& fragment, std::span<const std::int32_t> chosen) const {
-    const Mesh& mesh = fragment.mesh;
+  /// The `chosen` vertices of `fragment`, in that order, moved inward so that the hull plus the
+  /// collision margin is the fragment again: each vertex moves by the d with n . d = -margin for every
+  /// distinct plane n of its faces (`planes`; least squares, minimum norm: exact for a corner of three
+  /// planes, on an edge or in a face it moves along the shared normals only). Each move is capped at
+  /// half the vertex's distance from the centroid, so a needle corner cannot be pushed through the
+  /// fragment.
+  std::vector<Vec3> inset_points(const Fragment& fragment, const VertexPlanes& planes,
+                                 std::span<const std::int32_t> chosen) const {
     const double margin = settings.collision_margin;
-    std::vector<Vec3> points = mesh.vertices;
-    if (margin <= 0.0) return points;
-    // Only the chosen vertices move (and need their face normals); the rest are dropped by the caller.
-    std::vector<std::uint8_t> wanted(points.size(), chosen.empty() ? 1 : 0);
-    for (const std::int32_t v : chosen) wanted[static_cast<std::size_t>(v)] = 1;
-    std::vector<std::vector<Vec3>> normals(points.size());
-    for (const Triangle& t : mesh.triangles) {
-      if (!wanted[static_cast<std::size_t>(t[0])] && !wanted[static_cast<std::size_t>(t[1])] &&
-          !wanted[static_cast<std::size_t>(t[2])])
-        continue;
-      const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
-      Vec3 n = (mesh.vertices[static_cast<std::size_t>(t[1])] - a).cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a);
-      const double len = n.norm();
-      if (!(len > 0.0)) continue;
-      n /= len;
-      for (const std::int32_t v : t) {
-        auto& list = normals[static_cast<std::size_t>(v)];
-        if (std::none_of(list.begin(), list.end(), [&](const Vec3& m) { return m.dot(n) > 1.0 - 1e-9; }))
-          list.push_back(n);
-      }
-    }
-    for (std::size_t i = 0; i < points.size(); ++i) {
-      const auto& list = normals[i];
-      if (!wanted[i] || list.empty()) continue;
-      // Normal equations (sum n n^T) d = -margin sum n, solved by the pseudo-inverse (minimum norm).
-      Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
-      Vec3 rhs = Vec3::Zero();
-      for (const Vec3& n : list) {
-        a += n * n.transpose();
-        rhs -= margin * n;
-      }
-      Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
-      eig.computeDirect(a);
-      Vec3 d = Vec3::Zero();
-      for (int k = 0; k < 3; ++k) {
-        const double lambda = eig.eigenvalues()[k];
-        if (lambda > 1e-9 * eig.eigenvalues()[2]) {
-          const Vec3 v = eig.eigenvectors().col(k);
-          d += (v.dot(rhs) / lambda) * v;
+    std::vector<Vec3> points;
+    points.reserve(chosen.size());
+    for (const std::int32_t v : chosen) {
+      Vec3 p = fragment.mesh.vertices[static_cast<std::size_t>(v)];
+      const std::span<const Vec3> normals = planes.normals_of(static_cast<std::size_t>(v));
+      if (margin > 0.0 && !normals.empty()) {
+        // Normal equations (sum n n^T) d = -margin sum n, solved by the pseudo-inverse (minimum norm).
+        Eigen::Matrix3d a = Eigen::Matrix3d::Zero();
+        Vec3 rhs = Vec3::Zero();
+        for (const Vec3& n : normals) {
+          a += n * n.transpose();
+          rhs -= margin * n;
+        }
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+        eig.computeDirect(a);
+        Vec3 d = Vec3::Zero();
+        for (int k = 0; k < 3; ++k) {
+          const double lambda = eig.eigenvalues()[k];
+          if (lambda > 1e-9 * eig.eigenvalues()[2]) {
+            const Vec3 e = eig.eigenvectors().col(k);
+            d += (e.dot(rhs) / lambda) * e;
+          }
+        }
+        const double cap = 0.5 * (p - fragment.mass.centroid).norm();
+        if (d.allFinite()) {
+          if (d.norm() > cap) d *= cap / d.norm();
+          p += d;
         }
       }
-      const double cap = 0.5 * (points[i] - fragment.mass.centroid).norm();
-      if (!d.allFinite()) continue;
-      if (d.norm() > cap) d *= cap / d.norm();
-      points[i] += d;
+      points.push_back(p);
     }
     return points;
   }
@@ -224,16 +211,11 @@ struct PhysicsWorld::Impl {
   /// the body's principal frame (`centroid`, `axes`).
   std::unique_ptr<btCollisionShape> make_hull(const Fragment& fragment, const Vec3& centroid,
                                               const Eigen::Matrix3d& axes) const {
-    std::vector<std::int32_t> chosen;
-    if (settings.hull_vertex_budget > 0)
-      chosen = collider_point_indices(fragment.mesh.vertices, settings.hull_vertex_budget);
-    std::vector<Vec3> points = inset_points(fragment, chosen);
-    if (!chosen.empty()) {
-      std::vector<Vec3> kept;
-      kept.reserve(chosen.size());
-      for (const std::int32_t v : chosen) kept.push_back(points[static_cast<std::size_t>(v)]);
-      points = std::move(kept);
-    }
+    const Mesh& mesh = fragment.mesh;
+    const VertexPlanes planes = vertex_planes(mesh);
+    const std::vector<std::int32_t> chosen =
+        collider_vertex_indices(mesh, planes, settings.drop_inner_points, settings.hull_vertex_budget);
+    const std::vector<Vec3> points = inset_points(fragment, planes, chosen);
     std::unique_ptr<btConvexHullShape> hull = new_hull(nullptr, 0);
     for (const Vec3& p : points) hull->addPoint(to_bt(axes.transpose() * (p - centroid)), false);
     hull->recalcLocalAabb();
@@ -409,6 +391,22 @@ Vec3 PhysicsWorld::position(int body) const {
 Eigen::Matrix3d PhysicsWorld::rotation(int body) const {
   const Body& b = impl_->body(body);
   return from_bt(b.rigid->getCenterOfMassTransform().getBasis()) * b.principal.transpose();
+}
+
+std::vector<Vec3> PhysicsWorld::collider_points(int body) const {
+  const Body& b = impl_->body(body);
+  const btTransform& to_world = b.rigid->getCenterOfMassTransform();
+  std::vector<Vec3> out;
+  const auto add = [&](const btCollisionShape& shape) {
+    const auto& hull = static_cast<const btConvexHullShape&>(shape);
+    for (int i = 0; i < hull.getNumPoints(); ++i) out.push_back(from_bt(to_world(hull.getScaledPoint(i))));
+  };
+  if (b.children.empty()) {
+    add(*b.shape);
+  } else {
+    for (const auto& child : b.children) add(*child);
+  }
+  return out;
 }
 
 Vec3 PhysicsWorld::linear_velocity(int body) const {

@@ -67,6 +67,13 @@ struct PhysicsSettings {
   /// box of its local one: fewer broadphase pairs, the same contacts. The solver meets them in another
   /// order, so trajectories differ as they do when Bullet gets the same bodies in another order.
   bool tight_bounds = true;
+  /// A collider keeps only the piece's points that can be corners of its hull (outer_points.h): points
+  /// on the straight run of an edge or inside a flat face are dropped before the margin inset, so
+  /// there are fewer points to inset, reduce and scan. Before the inset the hull is the same to
+  /// round-off; after it, the collider loses the bulges where such a point near a corner, moved in
+  /// along its own faces only, landed beyond the corner's inset (and out of the piece with the margin).
+  /// Trajectories differ as with another body order (tests/.../outer_points_tests.cpp).
+  bool drop_inner_points = true;
 };
 
 /// Two bodies in contact after a step, by id (the ground plane is -1), first < second.
@@ -136,6 +143,9 @@ class PhysicsWorld {
   [[nodiscard]] Vec3 linear_velocity(int body) const;
   /// Angular velocity, rad/s, world.
   [[nodiscard]] Vec3 angular_velocity(int body) const;
+  /// The points of the body's collider (of each hull of a compound), world coordinates, m: the hull
+  /// the margin is added around.
+  [[nodiscard]] std::vector<Vec3> collider_points(int body) const;
   /// Mass as Bullet holds it, kg (0 for a static body).
   [[nodiscard]] double mass(int body) const;
   /// Principal moments of inertia as Bullet holds them, kg m^2, ascending (0 for a static body).

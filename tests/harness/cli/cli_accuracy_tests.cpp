@@ -122,7 +122,7 @@ TEST_CASE("cli: accuracy refuses bad input with exit 2, one line, and writes not
   }
 }
 
-TEST_CASE("cli: accuracy colliders family measures the volume a vertex budget cuts off", "[cli][accuracy][colliders]") {
+TEST_CASE("cli: accuracy colliders family measures the volume a vertex budget and the inner points cut off", "[cli][accuracy][colliders]") {
   const auto json = scratch("colliders") / "a.json";
   const auto r = run_cli("accuracy --case elephant --family colliders --fragments 5 --vertex-budget 0 8 32 "
                          "--repetitions 1 --json " + json.string());
@@ -130,18 +130,30 @@ TEST_CASE("cli: accuracy colliders family measures the volume a vertex budget cu
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("## colliders") != std::string::npos);
   const auto j = nlohmann::json::parse(slurp(json));
-  REQUIRE(j.at("points").size() == 3);
+  REQUIRE(j.at("points").size() == 4);  // the three budgets and the exact path
   std::map<int, double> loss;
+  double every_point_loss = -1.0;
+  double every_point_mean = 0.0;
+  double outer_mean = 0.0;
   for (const auto& p : j.at("points")) {
     INFO(p.dump());
     REQUIRE(p.at("family") == "colliders");
     const int budget = p.at("knobs").at("vertex_budget").get<int>();
-    loss[budget] = p.at("error").get<double>();
+    const double mean_points = p.at("figures").at("mean_points").get<double>();
+    if (p.at("knobs").at("drop_inner_points").get<bool>()) {
+      loss[budget] = p.at("error").get<double>();
+      if (budget == 0) outer_mean = mean_points;
+    } else {
+      every_point_loss = p.at("error").get<double>();
+      every_point_mean = mean_points;
+    }
     CHECK(p.at("figures").at("pieces").get<int>() >= 5);
-    if (budget > 0) CHECK(p.at("figures").at("mean_points").get<double>() <= budget);
+    if (budget > 0) CHECK(mean_points <= budget);
     CHECK(p.at("time_ms").get<double>() > 0.0);
   }
-  CHECK(loss.at(0) == 0.0);  // every point: the hull itself
+  CHECK(every_point_loss == 0.0);  // every point: the hull itself
+  CHECK(loss.at(0) <= 1e-12);      // the points that cannot be corners: the same hull to round-off
+  CHECK(outer_mean < every_point_mean);
   // The elephant's pieces have hundreds of points: 8 of them cut off much, 32 less, never all.
   CHECK(loss.at(8) > loss.at(32));
   CHECK(loss.at(32) > 0.0);

@@ -1,36 +1,20 @@
 // TightHullShape's box is the exact world box of the hull's points plus its margin; with it the
 // broadphase finds fewer pairs and the narrow phase the same contacts.
 
-#include "algorithms/core/mass_properties.h"
-#include "algorithms/core/primitives.h"
-#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "harness/pipeline/physics/physics_world.h"
 #include "harness/pipeline/physics/tight_hull_shape.h"
+#include "tests/support/standing_block.h"
 
 #include <catch2/catch.hpp>
 
-#include <algorithm>
 #include <random>
-#include <tuple>
 #include <vector>
-
-namespace {
 
 using shatter::Fragment;
 using shatter::PhysicsSettings;
-using shatter::PhysicsWorld;
-using shatter::Vec3;
-
-std::vector<Fragment> block_slices() {
-  shatter::FractureParams params;
-  params.fragments = 60;
-  params.seed = 11;
-  auto out = shatter::PlaneSliceFracturer().fracture(shatter::make_box(Vec3(2, 1, 1), Vec3(0, 0, 0.5)), params);
-  REQUIRE(out.ok());
-  return std::move(*out);
-}
-
-}  // namespace
+using shatter::test::SteppedBlock;
+using shatter::test::largest_difference;
+using shatter::test::stand_block;
 
 TEST_CASE("tight hull: the box holds every point plus the margin and touches the extreme ones", "[physics]") {
   std::mt19937 rng(5);
@@ -70,64 +54,21 @@ TEST_CASE("tight hull: the box holds every point plus the margin and touches the
   }
 }
 
-namespace {
-
-struct Stepped {
-  std::vector<shatter::TouchingPair> touching;
-  std::vector<Vec3> positions;  ///< by slab
-  int pairs = 0;
-};
-
-/// The slabs standing on the ground, one knocked, after `steps` steps; bodies added in reverse order
-/// when `reversed` (the same scene, another order of Bullet's pairs and contacts).
-Stepped stand_block(const std::vector<Fragment>& slabs, bool tight, bool reversed, int steps) {
-  PhysicsSettings s;
-  s.ground = true;
-  s.tight_bounds = tight;
-  PhysicsWorld world(s);
-  std::vector<int> ids(slabs.size());
-  for (std::size_t k = 0; k < slabs.size(); ++k) {
-    const std::size_t i = reversed ? slabs.size() - 1 - k : k;
-    ids[i] = world.add_fragment(slabs[i], 2400.0);
-  }
-  world.apply_impulse(ids[7], Vec3(50, 20, 0), slabs[7].mass.centroid);
-  Stepped out;
-  for (int i = 0; i < steps; ++i) {
-    world.step();
-    out.pairs = std::max(out.pairs, world.overlapping_pairs());
-  }
-  out.touching = world.touching_pairs();
-  if (reversed)  // ids were given in reverse: name the pairs by slab
-    for (shatter::TouchingPair& p : out.touching) {
-      const auto slab = [&](int id) { return id < 0 ? id : static_cast<int>(slabs.size()) - 1 - id; };
-      p = {std::min(slab(p.first), slab(p.second)), std::max(slab(p.first), slab(p.second)), p.points};
-    }
-  std::sort(out.touching.begin(), out.touching.end(), [](const auto& a, const auto& b) {
-    return std::tie(a.first, a.second) < std::tie(b.first, b.second);
-  });
-  for (const int id : ids) out.positions.push_back(world.position(id));
-  return out;
-}
-
-double largest_difference(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  double d = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, (a[i] - b[i]).norm());
-  return d;
-}
-
-}  // namespace
-
 TEST_CASE("tight hull: fewer pairs, the same contacts, trajectories as close as another body order", "[physics]") {
   // A block of 60 slabs standing on the ground, neighbours sharing faces, one knocked. The first step's
   // contacts are found before anything moves: both boxes give the same touching pairs with the same
   // numbers of points. The solver then meets them in another order; its fixed iterations do not
   // converge on a stack, so positions differ, as they do in Bullet's own world when the same bodies
   // are added in another order: the yardstick here.
-  const std::vector<Fragment> slabs = block_slices();
+  const std::vector<Fragment> slabs = shatter::test::block_slices();
+  PhysicsSettings loose_boxes;
+  loose_boxes.tight_bounds = false;
+  PhysicsSettings tight_boxes;
+  tight_boxes.tight_bounds = true;
   for (const int steps : {1, 30}) {
-    const Stepped loose = stand_block(slabs, false, false, steps);
-    const Stepped tight = stand_block(slabs, true, false, steps);
-    const Stepped reordered = stand_block(slabs, false, true, steps);
+    const SteppedBlock loose = stand_block(slabs, loose_boxes, false, steps);
+    const SteppedBlock tight = stand_block(slabs, tight_boxes, false, steps);
+    const SteppedBlock reordered = stand_block(slabs, loose_boxes, true, steps);
     const double by_boxes = largest_difference(loose.positions, tight.positions);
     const double by_order = largest_difference(loose.positions, reordered.positions);
     INFO(steps << " steps: pairs with Bullet's boxes " << loose.pairs << ", with exact boxes " << tight.pairs

@@ -3,7 +3,7 @@
 
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/primitives.h"
-#include "harness/pipeline/physics/convex_hull_volume.h"
+#include "algorithms/core/convex_hull_volume.h"
 
 #include <catch2/catch.hpp>
 

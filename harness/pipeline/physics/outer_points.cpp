@@ -1,0 +1,146 @@
+#include "harness/pipeline/physics/outer_points.h"
+
+#include <algorithm>
+#include <cstddef>
+
+namespace shatter {
+namespace {
+
+/// Two unit normals closer than this in dot product are one plane (about 4.5e-5 rad apart).
+constexpr double kSamePlaneDot = 1.0 - 1e-9;
+
+/// Relative size of a cross product below which two directions count as on one line (so the point is
+/// kept: the flat test only drops a point with neighbours clearly on every side).
+constexpr double kLineSine = 1e-12;
+
+/// The vertex's neighbours in pairs, each pair the other two corners of one of its faces in the
+/// face's counter-clockwise order (so (a - v) x (b - v) points out of the face).
+struct Fan {
+  const Vec3& v;
+  std::span<const std::int32_t> ring;
+  const std::vector<Vec3>& vertices;
+  [[nodiscard]] Vec3 edge(std::size_t k) const { return vertices[static_cast<std::size_t>(ring[k])] - v; }
+};
+
+/// True when `v` lies within `delta` of the segment between two of its neighbours, strictly between
+/// them: a point on the straight run of an edge.
+bool on_segment(const Fan& fan, double delta) {
+  const std::size_t k = fan.ring.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3 a = fan.edge(i);
+    for (std::size_t j = i + 1; j < k; ++j) {
+      if (fan.ring[i] == fan.ring[j]) continue;
+      const Vec3 b = fan.edge(j);
+      if (!(a.dot(b) < 0.0)) continue;  // not on opposite sides of v
+      const Vec3 ab = b - a;
+      const double len2 = ab.squaredNorm();
+      if (!(len2 > 0.0)) continue;
+      const double t = -a.dot(ab) / len2;  // v = a-end + t (b-end - a-end) at the foot
+      if (!(t > 0.0 && t < 1.0)) continue;
+      if (a.cross(b).squaredNorm() <= delta * delta * len2) return true;  // distance |a x b| / |ab|
+    }
+  }
+  return false;
+}
+
+/// True when `v` and its neighbours lie within `delta` of one plane through `v`, the faces around it all
+/// face one way, and the neighbours surround it in that plane (no half-plane through v holds them all):
+/// a point inside a flat face.
+bool inside_flat(const Fan& fan, double delta) {
+  const std::size_t k = fan.ring.size();
+  Vec3 sum = Vec3::Zero();
+  for (std::size_t i = 0; i + 1 < k; i += 2) sum += fan.edge(i).cross(fan.edge(i + 1));
+  const double len = sum.norm();
+  if (!(len > 0.0)) return false;
+  const Vec3 n = sum / len;
+  for (std::size_t i = 0; i + 1 < k; i += 2)
+    if (!(fan.edge(i).cross(fan.edge(i + 1)).dot(n) >= 0.0)) return false;  // a folded face
+  for (std::size_t i = 0; i < k; ++i)
+    if (!(std::abs(n.dot(fan.edge(i))) <= delta)) return false;
+  // The neighbours' directions in the plane; v is inside their hull when, for every direction, some
+  // neighbour lies strictly on each side of its line.
+  for (std::size_t i = 0; i < k; ++i) {
+    const Vec3 a = fan.edge(i);
+    if (!(a.norm() > delta)) return false;  // a neighbour at v: keep, rather than reason about it
+    bool left = false;
+    bool right = false;
+    for (std::size_t j = 0; j < k; ++j) {
+      const Vec3 b = fan.edge(j);
+      const double side = n.dot(a.cross(b));
+      const double line = kLineSine * a.norm() * b.norm();
+      if (side > line) left = true;
+      if (side < -line) right = true;
+    }
+    if (!(left && right)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+VertexPlanes vertex_planes(const Mesh& mesh) {
+  const std::size_t n = mesh.vertices.size();
+  VertexPlanes out;
+  std::vector<std::int32_t> first(n + 1, 0);  // each vertex's slots: one per face it is on
+  for (const Triangle& t : mesh.triangles)
+    for (const std::int32_t v : t) ++first[static_cast<std::size_t>(v) + 1];
+  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
+
+  out.ring_start.resize(n + 1);
+  for (std::size_t v = 0; v <= n; ++v) out.ring_start[v] = 2 * first[v];
+  out.ring.resize(2 * static_cast<std::size_t>(first[n]));
+  std::vector<Vec3> slots(static_cast<std::size_t>(first[n]));
+  std::vector<std::int32_t> used(n, 0);
+  std::vector<std::int32_t> filled(n, 0);
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
+    Vec3 normal = (mesh.vertices[static_cast<std::size_t>(t[1])] - a).cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a);
+    const double len = normal.norm();
+    const bool has_plane = len > 0.0;
+    if (has_plane) normal /= len;
+    for (int c = 0; c < 3; ++c) {
+      const auto v = static_cast<std::size_t>(t[c]);
+      std::int32_t& at = filled[v];
+      out.ring[static_cast<std::size_t>(out.ring_start[v] + at++)] = t[(c + 1) % 3];
+      out.ring[static_cast<std::size_t>(out.ring_start[v] + at++)] = t[(c + 2) % 3];
+      if (!has_plane) continue;
+      Vec3* begin = slots.data() + first[v];
+      Vec3* end = begin + used[v];
+      if (std::none_of(begin, end, [&](const Vec3& m) { return m.dot(normal) > kSamePlaneDot; })) {
+        *end = normal;
+        ++used[v];
+      }
+    }
+  }
+  out.normal_start.resize(n + 1);
+  out.normal_start[0] = 0;
+  for (std::size_t v = 0; v < n; ++v) out.normal_start[v + 1] = out.normal_start[v] + used[v];
+  out.normals.resize(static_cast<std::size_t>(out.normal_start[n]));
+  for (std::size_t v = 0; v < n; ++v)
+    std::copy_n(slots.begin() + first[v], used[v], out.normals.begin() + out.normal_start[v]);
+  return out;
+}
+
+std::vector<std::int32_t> outer_point_indices(const Mesh& mesh, const VertexPlanes& planes) {
+  std::vector<std::int32_t> kept;
+  const std::size_t n = mesh.vertices.size();
+  kept.reserve(n);
+  if (n == 0) return kept;
+  Vec3 lo = mesh.vertices[0];
+  Vec3 hi = lo;
+  for (const Vec3& p : mesh.vertices) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  const double delta = kOuterPointTolerance * (hi - lo).norm();
+  for (std::size_t v = 0; v < n; ++v) {
+    const std::size_t planes_here = planes.normals_of(v).size();
+    const Fan fan{mesh.vertices[v], planes.ring_of(v), mesh.vertices};
+    const bool inner = !fan.ring.empty() && planes_here >= 1 && planes_here <= 2 &&
+                       (on_segment(fan, delta) || (planes_here == 1 && inside_flat(fan, delta)));
+    if (!inner) kept.push_back(static_cast<std::int32_t>(v));
+  }
+  return kept;
+}
+
+}  // namespace shatter
