@@ -1,6 +1,7 @@
 #include "harness/pipeline/physics/outer_points.h"
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 
 namespace shatter {
@@ -22,24 +23,51 @@ struct Fan {
   [[nodiscard]] Vec3 edge(std::size_t k) const { return vertices[static_cast<std::size_t>(ring[k])] - v; }
 };
 
-/// True when `v` lies within `delta` of the segment between two of its neighbours, strictly between
-/// them: a point on the straight run of an edge.
+/// True when `v` lies within `delta` of the segment from v + a to v + b, strictly between the ends.
+bool between(const Vec3& a, const Vec3& b, double delta) {
+  if (!(a.dot(b) < 0.0)) return false;  // not on opposite sides of v
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (!(len2 > 0.0)) return false;
+  const double t = -a.dot(ab) / len2;  // the foot of v on the line, from the a end
+  if (!(t > 0.0 && t < 1.0)) return false;
+  return a.cross(b).squaredNorm() <= delta * delta * len2;  // distance |a x b| / |ab|
+}
+
+/// True when `v` lies within `delta` of the segment between two of its neighbours: a point on the
+/// straight run of an edge.
 bool on_segment(const Fan& fan, double delta) {
   const std::size_t k = fan.ring.size();
   for (std::size_t i = 0; i < k; ++i) {
     const Vec3 a = fan.edge(i);
-    for (std::size_t j = i + 1; j < k; ++j) {
-      if (fan.ring[i] == fan.ring[j]) continue;
-      const Vec3 b = fan.edge(j);
-      if (!(a.dot(b) < 0.0)) continue;  // not on opposite sides of v
-      const Vec3 ab = b - a;
-      const double len2 = ab.squaredNorm();
-      if (!(len2 > 0.0)) continue;
-      const double t = -a.dot(ab) / len2;  // v = a-end + t (b-end - a-end) at the foot
-      if (!(t > 0.0 && t < 1.0)) continue;
-      if (a.cross(b).squaredNorm() <= delta * delta * len2) return true;  // distance |a x b| / |ab|
-    }
+    for (std::size_t j = i + 1; j < k; ++j)
+      if (fan.ring[i] != fan.ring[j] && between(a, fan.edge(j), delta)) return true;
   }
+  return false;
+}
+
+/// on_segment for a vertex on exactly two planes: only the neighbours along the planes' common line
+/// (to a loose angle; `between` decides) can be the segment's ends, one on each side.
+bool on_crease(const Fan& fan, const Vec3& n1, const Vec3& n2, double delta) {
+  const Vec3 line = n1.cross(n2);
+  const double len = line.norm();
+  if (!(len > 1e-6)) return false;  // the planes face opposite ways: a fold, keep the point
+  const Vec3 dir = line / len;
+  constexpr int kMost = 4;
+  std::array<Vec3, kMost> ahead{};
+  std::array<Vec3, kMost> behind{};
+  int n_ahead = 0;
+  int n_behind = 0;
+  for (std::size_t i = 0; i < fan.ring.size(); ++i) {
+    const Vec3 a = fan.edge(i);
+    const double along = a.dot(dir);
+    if (!((a - along * dir).squaredNorm() <= 1e-12 * a.squaredNorm())) continue;  // off the line
+    if (along > 0.0 && n_ahead < kMost) ahead[n_ahead++] = a;
+    if (along < 0.0 && n_behind < kMost) behind[n_behind++] = a;
+  }
+  for (int i = 0; i < n_ahead; ++i)
+    for (int j = 0; j < n_behind; ++j)
+      if (between(ahead[i], behind[j], delta)) return true;
   return false;
 }
 
@@ -134,10 +162,11 @@ std::vector<std::int32_t> outer_point_indices(const Mesh& mesh, const VertexPlan
   }
   const double delta = kOuterPointTolerance * (hi - lo).norm();
   for (std::size_t v = 0; v < n; ++v) {
-    const std::size_t planes_here = planes.normals_of(v).size();
+    const std::span<const Vec3> normals = planes.normals_of(v);
     const Fan fan{mesh.vertices[v], planes.ring_of(v), mesh.vertices};
-    const bool inner = !fan.ring.empty() && planes_here >= 1 && planes_here <= 2 &&
-                       (on_segment(fan, delta) || (planes_here == 1 && inside_flat(fan, delta)));
+    bool inner = false;
+    if (normals.size() == 2) inner = on_crease(fan, normals[0], normals[1], delta);
+    if (normals.size() == 1) inner = on_segment(fan, delta) || inside_flat(fan, delta);
     if (!inner) kept.push_back(static_cast<std::int32_t>(v));
   }
   return kept;
