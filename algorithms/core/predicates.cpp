@@ -182,6 +182,10 @@ inline Expansion<16> cross(const Expansion<2>& x1, const Expansion<2>& y2, const
 
 [[gnu::noinline]] int orient3d_slow(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d,
                                      double permanent) {
+  // Four points with one coordinate equal lie in an axis plane: exactly coplanar. Faces of boxes and
+  // of axis-aligned walls meet this often, and the stages below could only prove the zero the slow way.
+  for (int i = 0; i < 3; ++i)
+    if (a[i] == d[i] && b[i] == d[i] && c[i] == d[i]) return 0;
   {
     DoubleDouble ad[3];
     DoubleDouble bd[3];

@@ -4,6 +4,8 @@
 
 namespace shatter {
 
+SelfIntersectionVerdicts::SelfIntersectionVerdicts(std::size_t capacity) : seen_(std::max<std::size_t>(capacity, 1), 0) {}
+
 bool SelfIntersectionVerdicts::remembers(std::uint64_t fingerprint) const {
   const std::lock_guard lock(mutex_);
   const auto end = seen_.begin() + static_cast<std::ptrdiff_t>(count_);

@@ -8,20 +8,21 @@
 /// breaks the same solid many times (a grid breaks the same pre-fracture in every cell of a row)
 /// passes one memory to all of them; a caller that passes none gets every check run.
 
-#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
+#include <vector>
 
 namespace shatter {
 
-/// How many clean verdicts a SelfIntersectionVerdicts remembers.
+/// How many clean verdicts a SelfIntersectionVerdicts remembers unless told otherwise.
 inline constexpr std::size_t kRememberedCleanMeshes = 64;
 
-/// The fingerprints of the last kRememberedCleanMeshes meshes found clean, oldest overwritten first.
-/// Thread-safe.
+/// The fingerprints of the last `capacity` meshes found clean, oldest overwritten first. Thread-safe.
 class SelfIntersectionVerdicts {
  public:
+  /// A memory of `capacity` (>= 1) clean verdicts.
+  explicit SelfIntersectionVerdicts(std::size_t capacity = kRememberedCleanMeshes);
   /// True when the mesh of `fingerprint` was found clean and is still remembered.
   [[nodiscard]] bool remembers(std::uint64_t fingerprint) const;
   /// Remembers that the mesh of `fingerprint` was found clean.
@@ -29,7 +30,7 @@ class SelfIntersectionVerdicts {
 
  private:
   mutable std::mutex mutex_;
-  std::array<std::uint64_t, kRememberedCleanMeshes> seen_{};
+  std::vector<std::uint64_t> seen_;
   std::size_t count_ = 0;
   std::size_t next_ = 0;
 };

@@ -7,6 +7,7 @@
 /// function over it; the run's outputs live in `result` from the start, so nothing is copied at the
 /// end. The case, the solid and the options are borrowed from the caller of run_destruction.
 
+#include "algorithms/core/self_intersection_verdicts.h"
 #include "algorithms/fracture/fracturer.h"
 #include "algorithms/stress/stress_model.h"
 #include "harness/pipeline/debris_field.h"
@@ -52,6 +53,9 @@ struct RunState {
   int runtime_fragments = 0;                     ///< pieces requested per hit fragment
   Loads loads;                                   ///< gravity of the case
 
+  /// The fragments the case's impacts reach, checked at setup as the runtime fracturer's inputs
+  /// (check_solid), so that the event's fractures find their verdicts; none under --no-skip.
+  std::unique_ptr<SelfIntersectionVerdicts> checked_inputs;
   std::vector<std::uint8_t> standing;   ///< per fragment: 1 while part of the held structure
   std::vector<std::uint8_t> anchored;   ///< per fragment: 1 when it overlaps an anchor region
   std::vector<int> static_body;         ///< per fragment: its static body in the world, or -1

@@ -67,7 +67,9 @@ Status fracture_phase(RunState& run, RuntimeEvent& e) {
   FractureParams params;
   params.fragments = run.runtime_fragments;
   params.impact = *e.impact;
-  params.verdicts = run.options.verdicts;  // a fragment broken again in a later repetition is not re-checked
+  // The hit fragments checked at setup (run_setup.cpp); without those, the caller's memory: a fragment
+  // broken again in a later repetition is not checked again.
+  params.verdicts = run.checked_inputs ? run.checked_inputs.get() : run.options.verdicts;
   const std::size_t first = e.pieces.size();
   const std::size_t batch = items_per_step(run, e.hit_fragments.size() - first, 1);
   // Each fracture writes its own slot; the seeds follow the hit fragment's index, not the thread.

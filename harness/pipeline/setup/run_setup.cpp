@@ -1,6 +1,7 @@
 #include "harness/pipeline/setup/run_setup.h"
 
 #include "algorithms/core/mesh.h"
+#include "algorithms/core/solid_check.h"
 #include "algorithms/fracture/local_fracture.h"
 #include "harness/pipeline/setup/offline_structure.h"
 #include "harness/pipeline/structure_response.h"
@@ -61,6 +62,29 @@ Status settle(RunState& run) {
     r.stages.skipped(Stage::falling_clusters, "no bonds: every fragment outside an anchor is loose");
   }
   return {};
+}
+
+/// The runtime fracturer checks its input (check_solid: closed, oriented, no self-intersection), and a
+/// hit fragment's check is most of a runtime fracture's work after the slicing itself. A game checks
+/// its assets while loading: the fragments the case's impacts reach (chosen as the event will choose
+/// them) are checked here, on the workers, and the event's fractures find their verdicts. A fragment
+/// the event reaches that is not among them, or that failed here, is checked in the frame as before.
+void check_runtime_inputs(RunState& run) {
+  if (run.options.no_skip || run.spec.impacts.empty()) return;
+  RunResult& r = run.result;
+  StageTimer timer(r.setup, Stage::runtime_fracture);
+  NearImpactOptions near;
+  near.eligible = run.standing;
+  near.cull_by_box = true;
+  std::vector<int> reached;
+  for (const ImpactEvent& e : run.spec.impacts)
+    for (const int f : fragments_near_impact(r.fragments, e.impact, near))
+      if (std::find(reached.begin(), reached.end(), f) == reached.end()) reached.push_back(f);
+  run.checked_inputs = std::make_unique<SelfIntersectionVerdicts>(reached.size() + kRememberedCleanMeshes);
+  const std::string_view who = run.runtime_fracturer->name();
+  run.workers.for_each(reached.size(), [&](std::size_t i) {
+    (void)check_solid(r.fragments[static_cast<std::size_t>(reached[i])].mesh, who, run.checked_inputs.get());
+  });
 }
 
 /// Contact manifolds for the world to allocate up front (PhysicsSettings::contact_pool_size): Bullet
@@ -143,6 +167,7 @@ Status run_setup(RunState& run) {
   if (Status s = create_run_algorithms(run); !s) return s;
   if (Status s = build_structure(run); !s) return s;
   if (Status s = settle(run); !s) return s;
+  check_runtime_inputs(run);
   build_world(run);
   return {};
 }
