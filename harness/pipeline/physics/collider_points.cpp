@@ -86,9 +86,9 @@ std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, i
 std::vector<std::int32_t> collider_vertex_indices(const Mesh& mesh, const VertexPlanes& planes,
                                                   bool drop_inner_points, int budget) {
   std::vector<std::int32_t> chosen;
-  if (drop_inner_points) {
-    chosen = outer_point_indices(mesh, planes);
-  } else {
+  if (drop_inner_points) chosen = outer_point_indices(mesh, planes);
+  // A piece flat to within the tolerance can keep only the corners of its outline: every point then.
+  if (chosen.size() < 4) {
     chosen.resize(mesh.vertices.size());
     std::iota(chosen.begin(), chosen.end(), 0);
   }

@@ -25,8 +25,8 @@ namespace shatter {
 [[nodiscard]] std::vector<std::int32_t> collider_point_indices(std::span<const Vec3> points, int budget);
 
 /// The vertices of `mesh` its collider is made of: those outer_point_indices keeps (every vertex when
-/// `drop_inner_points` is false), then at most `budget` of them by collider_point_indices (0: all of
-/// them). `planes` is vertex_planes(mesh).
+/// `drop_inner_points` is false, or when it keeps fewer than 4), then at most `budget` of them by
+/// collider_point_indices (0: all of them). `planes` is vertex_planes(mesh).
 [[nodiscard]] std::vector<std::int32_t> collider_vertex_indices(const Mesh& mesh, const VertexPlanes& planes,
                                                                 bool drop_inner_points, int budget);
 
