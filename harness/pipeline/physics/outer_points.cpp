@@ -47,7 +47,8 @@ bool on_segment(const Fan& fan, double delta) {
 }
 
 /// on_segment for a vertex on exactly two planes: only the neighbours along the planes' common line
-/// (to a loose angle; `between` decides) can be the segment's ends, one on each side.
+/// (to a loose angle; `between` decides) can be the segment's ends, one on each side. Each face's first
+/// other corner is every neighbour once in a closed fan (an open one may miss one: the point is kept).
 bool on_crease(const Fan& fan, const Vec3& n1, const Vec3& n2, double delta) {
   const Vec3 line = n1.cross(n2);
   const double len = line.norm();
@@ -58,16 +59,20 @@ bool on_crease(const Fan& fan, const Vec3& n1, const Vec3& n2, double delta) {
   std::array<Vec3, kMost> behind{};
   int n_ahead = 0;
   int n_behind = 0;
-  for (std::size_t i = 0; i < fan.ring.size(); ++i) {
+  for (std::size_t i = 0; i < fan.ring.size(); i += 2) {
     const Vec3 a = fan.edge(i);
     const double along = a.dot(dir);
     if (!((a - along * dir).squaredNorm() <= 1e-12 * a.squaredNorm())) continue;  // off the line
-    if (along > 0.0 && n_ahead < kMost) ahead[n_ahead++] = a;
-    if (along < 0.0 && n_behind < kMost) behind[n_behind++] = a;
+    if (along > 0.0 && n_ahead < kMost) {
+      for (int j = 0; j < n_behind; ++j)
+        if (between(a, behind[j], delta)) return true;
+      ahead[n_ahead++] = a;
+    } else if (along < 0.0 && n_behind < kMost) {
+      for (int j = 0; j < n_ahead; ++j)
+        if (between(ahead[j], a, delta)) return true;
+      behind[n_behind++] = a;
+    }
   }
-  for (int i = 0; i < n_ahead; ++i)
-    for (int j = 0; j < n_behind; ++j)
-      if (between(ahead[i], behind[j], delta)) return true;
   return false;
 }
 
