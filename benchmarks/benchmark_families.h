@@ -13,6 +13,11 @@ void register_fracture_benchmarks(const Registries& registries);
 /// without attributes (attribute_benchmarks.cpp); `registries` must outlive the benchmark run.
 void register_attribute_benchmarks(const Registries& registries);
 
+/// colliders/<solid>/<fracturer>/{every-point,outer-points}/<n>: building the colliders of a
+/// fracture's pieces with and without the points that cannot be hull corners (collider_benchmarks.cpp);
+/// `registries` must outlive the benchmark run.
+void register_collider_benchmarks(const Registries& registries);
+
 /// evaluate_wall/<model> and cascade_wall/<model> for every stress model of `registries`, which must
 /// outlive the benchmark run.
 void register_stress_benchmarks(const Registries& registries);
