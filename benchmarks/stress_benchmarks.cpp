@@ -11,15 +11,19 @@
 #include "algorithms/core/random.h"
 #include "benchmarks/benchmark_families.h"
 #include "algorithms/stress/propagation.h"
+#include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
+#include "harness/accuracy/cascade_accuracy.h"
 #include "fixtures/structures.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <memory>
 #include <span>
 #include <string>
+#include <tuple>
 
 namespace {
 
@@ -113,24 +117,49 @@ void evaluate_wall(benchmark::State& state, const Registries& registries, const 
   add_counters(state, g, report);
 }
 
-/// The cascade of `g` after `broken`, with mortar of `tensile_strength` (Pa), timed per iteration.
-void run_cascade(benchmark::State& state, const Registries& registries, const std::string& model_name,
-                 const SupportGraph& g, std::span<const int> broken, double tensile_strength, Pool pool) {
-  const std::unique_ptr<StressModel> model = std::move(registries.stress_models.create(model_name).value());
+/// The exact cascade of the same criterion (von Mises unless the model's name starts with "tresca"),
+/// made once per structure and strength: what an approximate model's outcome is set against.
+const PropagationResult& exact_cascade(const std::string& model_name, const SupportGraph& g,
+                                       std::span<const int> broken, const Material& material) {
+  static std::map<std::tuple<bool, const SupportGraph*, double>, PropagationResult> cache;
+  const bool tresca = model_name.rfind("tresca", 0) == 0;
+  auto [slot, made] = cache.try_emplace({tresca, &g, material.tensile_strength});
+  if (made)
+    slot->second = propagate(StrengthCriterionModel(tresca ? Criterion::tresca : Criterion::von_mises), g, Loads{},
+                             material, broken).value();
+  return slot->second;
+}
+
+/// The cascade of `g` after `broken`, with mortar of `tensile_strength` (Pa), timed per iteration; the
+/// counters set its outcome beside the exact cascade's (cascade_accuracy.h).
+void run_cascade(benchmark::State& state, const std::unique_ptr<StressModel>& model, const SupportGraph& g,
+                 std::span<const int> broken, double tensile_strength, Pool pool) {
   Material weak;  // a weak mortar, so that the hole makes something else fail
   weak.tensile_strength = tensile_strength;
-  SolverReport report;
-  int rounds = 0;
+  const PropagationResult& exact = exact_cascade(std::string(model->name()), g, broken, weak);
+  PropagationResult last;
   std::unique_ptr<StressSolver> solver;
   for (auto _ : state) {
     StressSolver& s = solver_for(state, pool, *model, g, weak, solver);
     Result<PropagationResult> r = propagate(s, Loads{}, broken);
     benchmark::DoNotOptimize(r);
-    report = r->report;
-    rounds = r->rounds;
+    last = std::move(r.value());
   }
-  add_counters(state, g, report);
-  state.counters["rounds"] = rounds;
+  const CascadeComparison outcome = compare_cascades(last, exact, g.node_count());
+  add_counters(state, g, last.report);
+  state.counters["rounds"] = last.rounds;
+  state.counters["broken"] = outcome.broken;
+  state.counters["broken_exact"] = outcome.reference_broken;
+  state.counters["broken_mismatch"] = outcome.broken_mismatch;
+  state.counters["falling"] = outcome.falling;
+  state.counters["falling_exact"] = outcome.reference_falling;
+  state.counters["falling_mismatch"] = outcome.falling_mismatch;
+}
+
+void run_cascade(benchmark::State& state, const Registries& registries, const std::string& model_name,
+                 const SupportGraph& g, std::span<const int> broken, double tensile_strength, Pool pool) {
+  const std::unique_ptr<StressModel> model = std::move(registries.stress_models.create(model_name).value());
+  run_cascade(state, model, g, broken, tensile_strength, pool);
 }
 
 void cascade_wall(benchmark::State& state, const Registries& registries, const std::string& model_name,
@@ -186,6 +215,15 @@ void cascade_wall_cold(benchmark::State& state, const char* model_name) {
   cascade_wall(state, builtin(), model_name, Pool::cold);
 }
 
+/// von-mises-local with a window of state.range(1) bonds on the wall of about state.range(0) bonds:
+/// the window's time against the outcome it changes.
+void cascade_wall_window(benchmark::State& state) {
+  const SupportGraph& g = wall(static_cast<int>(state.range(0)));
+  const std::unique_ptr<StressModel> model = std::move(
+      builtin().stress_models.create("von-mises-local", {{"hops", static_cast<double>(state.range(1))}}).value());
+  run_cascade(state, model, g, hole(g), 2e4, Pool::warm);
+}
+
 }  // namespace
 
 namespace shatter {
@@ -211,4 +249,5 @@ BENCHMARK_CAPTURE(evaluate_wall_cold, tresca, "tresca")->Arg(100)->Arg(1000)->Ar
 BENCHMARK_CAPTURE(evaluate_wall_cold, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cascade_wall_cold, tresca, "tresca")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cascade_wall_cold, von_mises, "von-mises")->Arg(100)->Arg(1000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(cascade_wall_window)->ArgsProduct({{1000, 10000}, {1, 2, 4, 8}})->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(cascade_box_cold, von_mises, "von-mises")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);

@@ -5,6 +5,7 @@
 #include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "algorithms/fracture/voronoi/voronoi_fracturer.h"
 #include "algorithms/stress/connection_count/connection_count_model.h"
+#include "algorithms/stress/rigid_body_spring/local_cascade_model.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 
 namespace shatter {
@@ -17,6 +18,7 @@ void register_all(Registries& registries) {
   register_connection_count(registries.stress_models);
   register_tresca(registries.stress_models);
   register_von_mises(registries.stress_models);
+  register_local_cascade_models(registries.stress_models);
 }
 
 }  // namespace shatter

@@ -47,15 +47,6 @@ std::pair<int, int> most_utilized(const StressResult& r) {
   return {best, ties};
 }
 
-/// max_i |sigma_i - sigma_ref_i| / max_i sigma_ref_i over the bonds.
-double solver_error(const StressResult& r, const StressResult& reference) {
-  double scale = 0.0, worst = 0.0;
-  for (const BondStress& b : reference.bonds) scale = std::max(scale, b.sigma);
-  for (std::size_t i = 0; i < r.bonds.size(); ++i)
-    worst = std::max(worst, std::abs(r.bonds[i].sigma - reference.bonds[i].sigma));
-  return scale > 0.0 ? worst / scale : worst;
-}
-
 Result<Structure> make_structure(SupportGraph graph, int slabs, const std::optional<BeamReference>& beam,
                                  const Loads& loads, const Material& material) {
   Structure s;
@@ -113,7 +104,7 @@ AccuracyPoint measure(const std::string& case_name, const Structure& s, const Se
   p.figures = {{"bonds", s.graph.bond_count()},
                {"reference", s.beam ? std::string(beam_kind_name(s.beam->kind)) : std::string("reference solve")}};
   if (has_forces) {
-    const double vs_solve = solver_error(result, s.reference);
+    const double vs_solve = sigma_error(result, s.reference);
     p.figures["analytic_error"] = s.beam ? nlohmann::ordered_json(beam_error(*s.beam, s.graph, result)) : nullptr;
     p.figures["solver_error"] = vs_solve;
     p.figures["residual"] = result.report.residual;
@@ -179,6 +170,14 @@ Result<std::vector<Setting>> model_settings(const StressModelRegistry& models, c
 }
 
 }  // namespace
+
+double sigma_error(const StressResult& r, const StressResult& reference) {
+  double scale = 0.0, worst = 0.0;
+  for (const BondStress& b : reference.bonds) scale = std::max(scale, b.sigma);
+  for (std::size_t i = 0; i < r.bonds.size(); ++i)
+    worst = std::max(worst, std::abs(r.bonds[i].sigma - reference.bonds[i].sigma));
+  return scale > 0.0 ? worst / scale : worst;
+}
 
 Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAccuracyOptions& o,
                                                    const Registries& registries) {

@@ -24,6 +24,14 @@ struct StressAccuracyOptions {
   int repetitions = 3;                             ///< timed evaluations per point, >= 1
 };
 
+/// max_i |sigma_i - sigma_ref_i| / max_i sigma_ref_i over the bonds of two results of one structure
+/// (the absolute difference when every reference stress is zero).
+double sigma_error(const StressResult& r, const StressResult& reference);
+
+/// max_i |sigma_i - sigma_ref_i| / max_i sigma_ref_i over the bonds of two results of one structure
+/// (the absolute difference when every reference stress is zero).
+double sigma_error(const StressResult& r, const StressResult& reference);
+
 /// Runs the sweep on `c`. An analytic case (classify_beam_case) is rebuilt at each slab count and its
 /// headline error is the closed-form error; any other case uses its own pre-fractured structure and its
 /// headline error is `solver_error`, against the reference solve (Eigen's LDL^T on the whole system).

@@ -3,6 +3,7 @@
 #include "algorithms/fracture/fem_lite/fem_lite_settings.h"
 #include "algorithms/registry/registries.h"
 #include "harness/accuracy/accuracy_output.h"
+#include "harness/accuracy/cascade_accuracy.h"
 #include "harness/accuracy/collider_accuracy.h"
 #include "harness/accuracy/fracture_accuracy.h"
 #include "harness/accuracy/stress_accuracy.h"
@@ -33,7 +34,7 @@ struct AccuracyOptions {
   std::vector<std::string> cases = {"elephant", "wall", "cantilever", "column", "fixed-beam"};
   std::string json;
   int repetitions = 3;
-  std::vector<std::string> families = {"fracture", "stress", "colliders"};
+  std::vector<std::string> families = {"fracture", "stress", "colliders", "cascade"};
   std::vector<std::string> fracturers;
   std::vector<std::string> models;
   std::vector<int> fragments = {5, 25, 100};
@@ -51,8 +52,8 @@ bool wants(const std::vector<std::string>& families, const char* family) {
 int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   // Everything is checked before anything runs, so bad input writes nothing.
   for (const std::string& f : o.families)
-    if (f != "fracture" && f != "stress" && f != "colliders")
-      return fail_input("--family: must be fracture, stress or colliders, got '" + f + "'");
+    if (f != "fracture" && f != "stress" && f != "colliders" && f != "cascade")
+      return fail_input("--family: must be fracture, stress, colliders or cascade, got '" + f + "'");
   for (const std::string& name : o.fracturers) {
     auto f = registries.fracturers.create(name);
     if (!f) return fail_input("--fracturer: " + f.error().message);
@@ -101,6 +102,10 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   so.solver_slabs = largest_slabs >= 32 ? 32 : largest_slabs;
   so.repetitions = 10 * o.repetitions;  // a stress evaluation takes well under a millisecond: time it more often
 
+  CascadeAccuracyOptions cao;
+  cao.models = o.models;
+  cao.repetitions = o.repetitions;
+
   ColliderAccuracyOptions co;
   co.budgets = o.vertex_budgets;
   co.fragments = o.fragments;
@@ -112,7 +117,7 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   for (const Case& c : cases)
     steps += (wants(o.families, "fracture") && !c.prefracture.explicit_planes() ? 1 : 0) +
              (wants(o.families, "colliders") && !c.prefracture.explicit_planes() ? 1 : 0) +
-             (wants(o.families, "stress") ? 1 : 0);
+             (wants(o.families, "stress") ? 1 : 0) + (wants(o.families, "cascade") ? 1 : 0);
   ProgressLine progress("accuracy", steps);
   for (const Case& c : cases) {
     names.push_back(c.name);
@@ -143,10 +148,18 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
       if (!p) return progress.end(), fail_input(p.error().message);
       points.insert(points.end(), p->begin(), p->end());
     }
+    if (wants(o.families, "cascade")) {
+      progress.step(c.name + ", cascade");
+      Result<std::vector<AccuracyPoint>> p = cascade_accuracy(c, cao, registries);
+      if (!p) return progress.end(), fail_input(p.error().message);
+      points.insert(points.end(), p->begin(), p->end());
+    }
   }
   progress.end();
-  // Fracture rows first, then stress, then colliders, each in run order.
-  const auto rank = [](const std::string& family) { return family == "fracture" ? 0 : family == "stress" ? 1 : 2; };
+  // Fracture rows first, then stress, then colliders, then cascades, each in run order.
+  const auto rank = [](const std::string& family) {
+    return family == "fracture" ? 0 : family == "stress" ? 1 : family == "colliders" ? 2 : 3;
+  };
   std::stable_sort(points.begin(), points.end(),
                    [&](const AccuracyPoint& a, const AccuracyPoint& b) { return rank(a.family) < rank(b.family); });
   mark_pareto_front(points);
@@ -168,6 +181,8 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
       failed_checks += print_failed_checks(subject, p.figures["failed_checks"].get<std::vector<std::string>>());
     if (p.family == "stress" && p.figures.contains("failed") && p.knobs.value("solver", "default") == "default")
       failed_checks += print_failed_checks(subject, {p.figures["failed"].get<std::string>()});
+    if (p.family == "cascade" && p.figures.contains("failed"))
+      failed_checks += print_failed_checks(subject, {p.figures["failed"].get<std::string>()});
   }
   return failed_checks > 0 ? exit_gate_failed : exit_ok;
 }
@@ -186,7 +201,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& regis
                   "Timed runs per fracture point (stress points: 10 x); the median is reported")
       ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
-  cmd->add_option("--family", o->families, "Families to run: fracture, stress, colliders (default all three)");
+  cmd->add_option("--family", o->families, "Families to run: fracture, stress, colliders, cascade (default all four)");
   cmd->add_option("--vertex-budget", o->vertex_budgets,
                   "Collider vertex budgets of the colliders family (0 = every point, the exact path)")
       ->capture_default_str();

@@ -92,6 +92,7 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   script += "set xlabel \"time (ms, median of the repetitions)\"\n";
   script += family == "fracture"    ? "set ylabel \"replay error (relative volume mismatch)\"\n"
             : family == "colliders" ? "set ylabel \"largest share of a piece's hull volume cut off\"\n"
+            : family == "cascade"   ? "set ylabel \"share of bonds broken or fragments falling unlike the exact cascade\"\n"
                                     : "set ylabel \"error (relative, against the reference)\"\n";
   script += "set offsets graph 0.05, graph 0.15, graph 0.1, graph 0.1\n";
   script += "set linetype 1 lc rgb \"#4e79a7\" pt 7\nset linetype 2 lc rgb \"#e15759\" pt 5\n"

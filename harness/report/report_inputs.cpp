@@ -121,8 +121,8 @@ ReportAccuracy read_accuracy(const Json& j, const std::string& file) {
     const Json& e = points[i];
     AccuracyPoint p;
     p.family = text(e, "family", path);
-    if (p.family != "fracture" && p.family != "stress" && p.family != "colliders")
-      throw KeyError{path + ".family: expected fracture, stress or colliders"};
+    if (p.family != "fracture" && p.family != "stress" && p.family != "colliders" && p.family != "cascade")
+      throw KeyError{path + ".family: expected fracture, stress, colliders or cascade"};
     p.case_name = text(e, "case", path);
     p.algorithm = text(e, "algorithm", path);
     p.knob = text(e, "knob", path);

@@ -7,6 +7,7 @@
 #include "algorithms/stress/rigid_body_spring/spring_system.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "fixtures/structures.h"
+#include "tests/support/vector_difference.h"
 
 #include <catch2/catch.hpp>
 
@@ -16,19 +17,9 @@
 
 using namespace shatter;
 using namespace shatter::fixtures;
+using shatter::test::relative_difference;
 
 namespace {
-
-/// Max |a - b| / max |b| over the displacements.
-double relative_difference(const std::vector<double>& a, const std::vector<double>& b) {
-  REQUIRE(a.size() == b.size());
-  double diff = 0.0, scale = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    diff = std::max(diff, std::abs(a[i] - b[i]));
-    scale = std::max(scale, std::abs(b[i]));
-  }
-  return diff / scale;
-}
 
 /// The bonds of the wall's block nearest (x, z).
 std::vector<int> bonds_of_block_at(const SupportGraph& g, double x, double z) {

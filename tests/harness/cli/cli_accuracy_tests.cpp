@@ -167,5 +167,36 @@ TEST_CASE("cli: accuracy refuses a vertex budget below 4 and an unknown family",
   CHECK(budget.out.empty());
   const auto family = run_cli("accuracy --case wall --family hulls");
   CHECK(family.exit_code == 2);
-  CHECK(family.err.find("fracture, stress or colliders") != std::string::npos);
+  CHECK(family.err.find("fracture, stress, colliders or cascade") != std::string::npos);
+}
+
+TEST_CASE("cli: accuracy cascade family sets each model's cascade against the exact one", "[cli][accuracy][cascade]") {
+  const auto json = scratch("cascade") / "a.json";
+  const auto r = run_cli("accuracy --case wall --family cascade --repetitions 1 --json " + json.string());
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  REQUIRE(r.out.find("## cascade") != std::string::npos);
+  const auto j = nlohmann::json::parse(slurp(json));
+  // tresca, von-mises, and each windowed model at its default and at hops 1, 2, 4 and 8.
+  REQUIRE(j.at("points").size() == 12);
+  std::map<std::string, double> error;
+  for (const auto& p : j.at("points")) {
+    INFO(p.dump());
+    REQUIRE(p.at("family") == "cascade");
+    const auto& f = p.at("figures");
+    REQUIRE_FALSE(f.contains("failed"));
+    CHECK(f.at("reference_rounds").get<int>() >= 2);  // the scaled strengths make a real cascade
+    CHECK(f.at("reference_broken").get<int>() > f.at("hole").get<int>());
+    CHECK(p.at("time_ms").get<double>() > 0.0);
+    const double e = p.at("error").get<double>();
+    CHECK(e == std::max(f.at("broken_mismatch").get<double>(), f.at("falling_mismatch").get<double>()));
+    error[p.at("algorithm").get<std::string>() + " " + p.at("knob").get<std::string>()] = e;
+  }
+  // The exact models are the reference's own cascade, and so is a window over the whole wall.
+  CHECK(error.at("von-mises default") == 0.0);
+  CHECK(error.at("tresca default") == 0.0);
+  CHECK(error.at("von-mises-local hops=8") == 0.0);
+  // A window of one bond holds the wall up where the exact cascade goes on: the error is measured.
+  CHECK(error.at("von-mises-local hops=1") > 0.1);
+  CHECK(error.at("tresca-local hops=1") > 0.1);
 }

@@ -1,0 +1,41 @@
+#pragma once
+/// "tresca-local" and "von-mises-local": the models "tresca" and "von-mises" with cascade rounds solved
+/// on a window around their breaks (local_cascade_solver.h). A single evaluation is the exact one; a
+/// cascade is an approximation of size `hops`, reported against the exact cascade by `shatterbench
+/// accuracy --family cascade`.
+
+#include "algorithms/stress/rigid_body_spring/spring_system.h"
+#include "algorithms/stress/strength_criterion.h"
+#include "algorithms/stress/stress_model.h"
+#include "algorithms/stress/stress_model_registry.h"
+
+namespace shatter {
+
+/// The rigid-body-spring model with windowed cascade rounds, judged by one criterion.
+class LocalCascadeModel final : public StressModel {
+ public:
+  /// The default window: 4 bonds around each break (docs/stress.md, section 6).
+  static constexpr int kDefaultHops = 4;
+
+  LocalCascadeModel(Criterion criterion, SpringSolverSettings settings, int hops)
+      : criterion_(criterion), settings_(settings), hops_(hops) {}
+
+  [[nodiscard]] std::string_view name() const override {
+    return criterion_ == Criterion::tresca ? "tresca-local" : "von-mises-local";
+  }
+  /// A LocalCascadeSolver (local_cascade_solver.h) for `graph` and `material`.
+  [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
+                                                          const Material& material) const override;
+  /// Bonds around a break whose nodes a cascade round solves again.
+  [[nodiscard]] int hops() const { return hops_; }
+
+ private:
+  Criterion criterion_;
+  SpringSolverSettings settings_;
+  int hops_;
+};
+
+/// Registers "tresca-local" and "von-mises-local".
+void register_local_cascade_models(StressModelRegistry& registry);
+
+}  // namespace shatter

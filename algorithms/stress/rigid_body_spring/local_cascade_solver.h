@@ -1,0 +1,89 @@
+#pragma once
+/// The solver of "tresca-local" and "von-mises-local": the rigid-body-spring model whose cascade rounds
+/// re-solve only the neighbourhood of their breaks.
+///
+/// Design note: an exact round of a cascade solves the whole structure again (cascade_solver.h), which
+/// on a 10,000-bond wall costs several ms however few bonds broke, and a cascade has 10 to 20 rounds.
+/// A break changes the forces mostly near it (the load finds its way round the gap through the bonds
+/// next to it; farther away the change decays), so this solver solves a cascade's first evaluation
+/// exactly and every later round on a window: the nodes within `hops` intact bonds of the round's
+/// breaks. The nodes just outside keep their displacements (a fixed boundary), anchored nodes stay
+/// fixed, and the window's displacements are the exact solution of that local problem; the bonds with
+/// an end in the window get new forces, the others keep theirs. Clusters cut loose fall exactly as in
+/// the exact model (the components are found on the whole graph every round). When the window holds
+/// a whole component, its solve is the exact one. What the window leaves out is an approximation with
+/// a named size: `shatterbench accuracy --family cascade` reports the bonds it breaks differently from
+/// the exact cascade and its stresses against an exact round (docs/stress.md, section 6).
+
+#include "algorithms/stress/rigid_body_spring/bond_spring.h"
+#include "algorithms/stress/rigid_body_spring/linear_solve.h"
+#include "algorithms/stress/rigid_body_spring/solved_systems.h"
+#include "algorithms/stress/rigid_body_spring/strength_criterion_solver.h"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+namespace shatter {
+
+/// The nodes of a cascade round's window: `hops` intact bonds around the seeds.
+struct CascadeWindow {
+  std::vector<int> nodes;        ///< window nodes, in breadth-first order from the seeds
+  std::vector<int> index;        ///< #nodes: position in `nodes`, or -1 outside the window
+};
+
+/// The free nodes within `hops` bonds (not `broken`) of the free `seeds`, walking only through free
+/// nodes: a free node is one of an anchored component (`anchored_component`, per node) that is not
+/// anchored itself. Anchored nodes have no unknowns, and a break's effect does not pass through them.
+CascadeWindow cascade_window(const SupportGraph& graph, std::span<const std::uint8_t> broken,
+                             std::span<const std::uint8_t> anchored_component, std::span<const int> seeds, int hops);
+
+/// A rigid-body-spring solver of one structure whose cascade rounds after the first are solved on a
+/// window of `hops` bonds around their breaks (see the header note).
+class LocalCascadeSolver final : public StressSolver {
+ public:
+  /// A solver for `graph` (which must outlive it unchanged) made of `material`; `hops` >= 1.
+  LocalCascadeSolver(const SupportGraph& graph, const Material& material, Criterion criterion,
+                     const SpringSolverSettings& settings, int hops);
+  ~LocalCascadeSolver() override;
+
+  [[nodiscard]] const SupportGraph& graph() const override { return exact_.graph(); }
+  /// The exact evaluation (StrengthCriterionSolver).
+  [[nodiscard]] Result<StressResult> evaluate(const Loads& loads) override;
+  /// A `previous` without displacements (a cascade's start) is solved exactly; one with them is solved
+  /// on the window around `touched` (the ends of the round's breaks).
+  [[nodiscard]] Result<StressResult> reevaluate(const Loads& loads, const StressResult& previous,
+                                                std::span<const int> touched) override;
+
+ private:
+  /// A bond's spring and stiffness blocks, made on first use and kept (the material is fixed).
+  struct BondBlocks {
+    BondSpring spring;
+    std::array<Matrix6, 4> blocks;
+  };
+  const BondBlocks& bond_blocks_of(int bond);
+
+  /// The exact solve of one window with its boundary held at `previous`: the window nodes'
+  /// displacements (6 per node, in window order) and the stresses of the bonds with an end in it.
+  struct WindowSolve {
+    std::vector<double> displacements;
+    std::vector<int> bonds;
+    std::vector<BondStress> stresses;
+    SolverReport report;
+  };
+  WindowSolve solve_window(const CascadeWindow& window, const StressResult& previous,
+                           std::span<const std::uint8_t> broken, std::span<const double> f);
+
+  StrengthCriterionSolver exact_;
+  Material material_;
+  Criterion criterion_;
+  SpringSolverSettings settings_;
+  int hops_;
+  SolverMemory memory_;
+  std::vector<BondBlocks> bond_blocks_;    // #bonds once a window needed one
+  std::vector<std::uint8_t> blocks_made_;  // #bonds: 1 when bond_blocks_ holds the bond's  // the windows' analyses and factors (a window seen again reuses them)
+};
+
+}  // namespace shatter
