@@ -49,90 +49,111 @@ CellPolytope box_polytope(const Aabb& b) {
 
 namespace {
 
+/// The working storage of clip(), kept per thread: a clip then allocates only when a face outgrows
+/// its storage. Faces cut away keep theirs for the next new face.
+struct ClipScratch {
+  std::vector<std::pair<CornerKey, std::int32_t>> made;  // corners made by this clip, by their three faces
+  std::vector<double> d;                                 // signed distance of each corner to the plane
+  std::vector<std::pair<std::int32_t, std::pair<std::int32_t, int>>> new_edges;  // (start, (end, across))
+  std::vector<std::int32_t> corners;                     // the clipped face being built
+  std::vector<int> across;
+  std::vector<CellPolytope::Face> spare;                 // faces cut away, their storage kept
+};
+
 /// Clips `p` by plane `label` (negative side kept). False when a corner lies exactly on the plane.
+/// The surviving faces keep their order and the new face comes last.
 bool clip(CellPolytope& p, const Plane& plane, int label) {
-  // Corners made by this clip, by the two faces of the edge they cut: the edge is met from both.
-  std::vector<std::pair<CornerKey, std::int32_t>> made;
-  std::vector<double> d(p.corners.size());
+  thread_local ClipScratch s;
+  s.made.clear();
+  s.new_edges.clear();
   bool any_above = false;
   // Only the corners of live faces matter; corners cut off earlier keep a dummy distance.
-  std::fill(d.begin(), d.end(), -1.0);
+  s.d.assign(p.corners.size(), -1.0);
   for (const CellPolytope::Face& face : p.faces)
     for (const std::int32_t c : face.corners) {
       const auto sc = static_cast<std::size_t>(c);
-      d[sc] = plane.normal.dot(p.corners[sc] - plane.point);
-      if (d[sc] == 0.0) return false;
-      any_above |= d[sc] > 0;
+      s.d[sc] = plane.normal.dot(p.corners[sc] - plane.point);
+      if (s.d[sc] == 0.0) return false;
+      any_above |= s.d[sc] > 0;
     }
   if (!any_above) return true;
   const auto crossing = [&](int fa, int fb, std::int32_t a, std::int32_t b) {
     const CornerKey key = corner_key(fa, fb, label);
-    for (const auto& [k, corner] : made)
+    for (const auto& [k, corner] : s.made)
       if (k == key) return corner;
-    const double da = d[static_cast<std::size_t>(a)];
-    const double db = d[static_cast<std::size_t>(b)];
+    const double da = s.d[static_cast<std::size_t>(a)];
+    const double db = s.d[static_cast<std::size_t>(b)];
     const Vec3& pa = p.corners[static_cast<std::size_t>(a)];
     const Vec3& pb = p.corners[static_cast<std::size_t>(b)];
     const auto corner = static_cast<std::int32_t>(p.corners.size());
     p.corners.push_back(pa + (pb - pa) * (da / (da - db)));
-    made.emplace_back(key, corner);
+    s.made.emplace_back(key, corner);
     return corner;
   };
-  std::vector<CellPolytope::Face> kept;
-  kept.reserve(p.faces.size() + 1);
-  // On the new face, a few edges: (start, (end, across)).
-  std::vector<std::pair<std::int32_t, std::pair<std::int32_t, int>>> new_edges;
-  for (CellPolytope::Face& face : p.faces) {
+  // Faces are clipped in place and the survivors packed to the front, in order.
+  std::size_t live = 0;
+  for (std::size_t f = 0; f < p.faces.size(); ++f) {
+    CellPolytope::Face& face = p.faces[f];
     const bool untouched = std::all_of(face.corners.begin(), face.corners.end(),
-                                       [&](std::int32_t c) { return d[static_cast<std::size_t>(c)] < 0; });
-    if (untouched) {  // wholly on the kept side: the face stays as it is
-      kept.push_back(std::move(face));
-      continue;
-    }
-    CellPolytope::Face out;
-    out.label = face.label;
-    const std::size_t n = face.corners.size();
-    for (std::size_t k = 0; k < n; ++k) {
-      const std::int32_t a = face.corners[k];
-      const std::int32_t b = face.corners[(k + 1) % n];
-      const bool a_in = d[static_cast<std::size_t>(a)] < 0;
-      const bool b_in = d[static_cast<std::size_t>(b)] < 0;
-      if (a_in) {
-        out.corners.push_back(a);
-        out.across.push_back(face.across[k]);
+                                       [&](std::int32_t c) { return s.d[static_cast<std::size_t>(c)] < 0; });
+    if (!untouched) {
+      s.corners.clear();
+      s.across.clear();
+      const std::size_t n = face.corners.size();
+      for (std::size_t k = 0; k < n; ++k) {
+        const std::int32_t a = face.corners[k];
+        const std::int32_t b = face.corners[(k + 1) % n];
+        const bool a_in = s.d[static_cast<std::size_t>(a)] < 0;
+        const bool b_in = s.d[static_cast<std::size_t>(b)] < 0;
+        if (a_in) {
+          s.corners.push_back(a);
+          s.across.push_back(face.across[k]);
+        }
+        if (a_in != b_in) {
+          const std::int32_t x = a_in ? crossing(face.label, face.across[k], a, b)
+                                      : crossing(face.label, face.across[k], b, a);
+          s.corners.push_back(x);
+          s.across.push_back(a_in ? label : face.across[k]);
+        }
       }
-      if (a_in != b_in) {
-        const std::int32_t x = a_in ? crossing(face.label, face.across[k], a, b)
-                                    : crossing(face.label, face.across[k], b, a);
-        out.corners.push_back(x);
-        out.across.push_back(a_in ? label : face.across[k]);
-      }
+      for (std::size_t k = 0; k < s.corners.size(); ++k)
+        if (s.across[k] == label) s.new_edges.push_back({s.corners[(k + 1) % s.corners.size()], {s.corners[k], face.label}});
+      if (s.corners.size() < 3) continue;  // cut away: left behind the live faces
+      face.corners.assign(s.corners.begin(), s.corners.end());
+      face.across.assign(s.across.begin(), s.across.end());
     }
-    for (std::size_t k = 0; k < out.corners.size(); ++k)
-      if (out.across[k] == label) new_edges.push_back({out.corners[(k + 1) % out.corners.size()], {out.corners[k], face.label}});
-    if (out.corners.size() >= 3) kept.push_back(std::move(out));
+    if (live != f) std::swap(p.faces[live], face);
+    ++live;
   }
-  if (new_edges.size() >= 3) {
+  for (std::size_t f = live; f < p.faces.size(); ++f)
+    if (s.spare.size() < 64) s.spare.push_back(std::move(p.faces[f]));
+  p.faces.resize(live);
+  if (s.new_edges.size() >= 3) {
     // The new face runs along the new edges reversed; they must form one loop.
     CellPolytope::Face face;
+    if (!s.spare.empty()) {
+      face = std::move(s.spare.back());
+      s.spare.pop_back();
+      face.corners.clear();
+      face.across.clear();
+    }
     face.label = label;
     // A start met twice would make the loop ambiguous (the map this replaces kept the last one).
-    std::sort(new_edges.begin(), new_edges.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-    for (std::size_t k = 1; k < new_edges.size(); ++k)
-      if (new_edges[k].first == new_edges[k - 1].first) return false;
-    std::int32_t at = new_edges.front().first;
-    for (std::size_t step = 0; step < new_edges.size(); ++step) {
-      const auto it = std::lower_bound(new_edges.begin(), new_edges.end(), at,
+    std::sort(s.new_edges.begin(), s.new_edges.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    for (std::size_t k = 1; k < s.new_edges.size(); ++k)
+      if (s.new_edges[k].first == s.new_edges[k - 1].first) return false;
+    std::int32_t at = s.new_edges.front().first;
+    for (std::size_t step = 0; step < s.new_edges.size(); ++step) {
+      const auto it = std::lower_bound(s.new_edges.begin(), s.new_edges.end(), at,
                                        [](const auto& x, std::int32_t key) { return x.first < key; });
-      if (it == new_edges.end() || it->first != at) return false;
+      if (it == s.new_edges.end() || it->first != at) return false;
       face.corners.push_back(at);
       face.across.push_back(it->second.second);
       at = it->second.first;
     }
     if (at != face.corners.front()) return false;
-    kept.push_back(std::move(face));
+    p.faces.push_back(std::move(face));
   }
-  p.faces = std::move(kept);
   return true;
 }
 
