@@ -124,9 +124,11 @@ std::vector<VoronoiCell> voronoi_cells(std::span<const Vec3> sites, const Aabb& 
         if (k == order.size()) break;
       }
       if (order[k].first > 4.0 * r2) break;  // this bisector and all later ones lie beyond the cell
+      const std::size_t corners_before = cell.polytope.corners.size();
       clip_polytope(cell.polytope, bisector_plane(sites, i, order[k].second), static_cast<int>(k));
       if (!cell.polytope.ok) break;
-      r2 = max_corner_distance_squared(cell.polytope, s);
+      // A plane that cuts makes corners; one that misses leaves the cell, and its reach, as they were.
+      if (cell.polytope.corners.size() != corners_before) r2 = max_corner_distance_squared(cell.polytope, s);
     }
     if (!cell.polytope.ok) r2 = max_corner_distance_squared(box_polytope(box), s);  // the box bounds it
     // Only bisectors within twice the cell's reach can bound it inside the box.
