@@ -151,6 +151,8 @@ void CellClipper::select_planes(std::span<const Plane> planes, const Aabb& box) 
   // exact side tests see every plane that could cut (a cut on a plane without a face is refused).
   std::vector<std::int32_t> live;
   for (const CellPolytope::Face& face : polytope_.faces) live.insert(live.end(), face.corners.begin(), face.corners.end());
+  std::sort(live.begin(), live.end());  // each corner once (it is on three faces or more)
+  live.erase(std::unique(live.begin(), live.end()), live.end());
   std::vector<int> slot(planes.size(), -1);
   for (const CellPolytope::Face& face : polytope_.faces)
     if (face.label >= 0) slot[static_cast<std::size_t>(face.label)] = 0;
