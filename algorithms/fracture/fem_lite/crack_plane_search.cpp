@@ -25,7 +25,7 @@ bool too_close(const Vec3& centre, std::span<const Plane> planes, const Vec3& ce
 }  // namespace
 
 CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::span<const ElementStress> stresses,
-                                const CrackSearchOptions& options) {
+                                const CrackSearchOptions& options, std::vector<SliceKernel::Piece>* pieces_out) {
   CrackSearch search;
   const std::size_t count = stresses.size();
   for (const ElementStress& s : stresses)
@@ -70,6 +70,7 @@ CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::spa
     if (pieces.add(plane) > 0) search.planes.push_back(plane);
   }
   search.fragments = pieces.count();
+  if (pieces_out != nullptr) *pieces_out = pieces.take_pieces();
   return search;
 }
 

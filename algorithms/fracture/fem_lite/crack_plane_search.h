@@ -18,6 +18,8 @@
 #include "algorithms/fracture/fem_lite/element_stress.h"
 #include "algorithms/fracture/fem_lite/hex_grid.h"
 
+#include "algorithms/fracture/plane_slice/slice_kernel.h"
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -44,8 +46,9 @@ struct CrackSearch {
 };
 
 /// Searches the crack planes of `solid` (closed, outward) from the element stresses of `grid`
-/// (#E). Deterministic in `options.seed`.
+/// (#E). Deterministic in `options.seed`. With `pieces`, it receives the pieces the planes cut the
+/// solid into, as PlaneSliceFracturer::fracture_by_planes makes them from a plain mesh.
 CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::span<const ElementStress> stresses,
-                                const CrackSearchOptions& options);
+                                const CrackSearchOptions& options, std::vector<SliceKernel::Piece>* pieces = nullptr);
 
 }  // namespace shatter

@@ -13,7 +13,8 @@
 
 namespace shatter {
 
-Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params) const {
+Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params,
+                                                  std::vector<SliceKernel::Piece>* pieces) const {
   if (Status s = check_fracture_params(solid, params, "fem-lite"); !s) return s.error();
   if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
   FemLiteAnalysis analysis;
@@ -46,7 +47,8 @@ Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const Fract
   options.tensile_strength = settings_.material.tensile_strength;
   options.seed = params.seed;
   options.min_piece_share = settings_.min_piece_share;
-  CrackSearch search = search_crack_planes(solid, grid, stresses, options);
+  CrackSearch search =
+      search_crack_planes(solid, grid, stresses, options, has_attributes(solid) ? nullptr : pieces);
   analysis.planes = std::move(search.planes);
   analysis.fragments = search.fragments;
   analysis.over_strength = search.over_strength;
@@ -60,9 +62,14 @@ Result<std::vector<Plane>> FemLiteFracturer::crack_planes(const Mesh& solid, con
 }
 
 Result<std::vector<Fragment>> FemLiteFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
-  Result<std::vector<Plane>> planes = crack_planes(solid, params);
-  if (!planes) return planes.error();
-  return PlaneSliceFracturer().fracture_by_planes(solid, *planes, kMaxFragments, params.verdicts);
+  std::vector<SliceKernel::Piece> pieces;
+  Result<FemLiteAnalysis> analysis = analyse(solid, params, &pieces);
+  if (!analysis) return analysis.error();
+  // The search's pieces are fracture_by_planes' fragments; it runs itself for what the search did not
+  // cut (one fragment, an attributed solid) and for its own error past the fragment limit.
+  if (!pieces.empty() && pieces.size() <= static_cast<std::size_t>(kMaxFragments))
+    return to_fragments(std::move(pieces), nullptr);
+  return PlaneSliceFracturer().fracture_by_planes(solid, analysis->planes, kMaxFragments, params.verdicts);
 }
 
 Result<std::optional<CutPlan>> FemLiteFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {

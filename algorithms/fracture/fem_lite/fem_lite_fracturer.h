@@ -9,6 +9,7 @@
 #include "algorithms/fracture/fem_lite/fem_lite_settings.h"
 #include "algorithms/fracture/fracturer.h"
 #include "algorithms/fracture/fracturer_registry.h"
+#include "algorithms/fracture/plane_slice/slice_kernel.h"
 
 #include <vector>
 
@@ -35,7 +36,9 @@ class FemLiteFracturer final : public Fracturer {
   /// A fracturer with the given settings (checked when fracturing).
   explicit FemLiteFracturer(FemLiteSettings settings) : settings_(std::move(settings)) {}
   [[nodiscard]] std::string_view name() const override { return "fem-lite"; }
-  /// crack_planes() then PlaneSliceFracturer::fracture_by_planes.
+  /// crack_planes() then PlaneSliceFracturer::fracture_by_planes: for a solid without attributes, the
+  /// pieces the crack search cut (the same kernel, the same pieces in the same order) are the
+  /// fragments, so the cuts are not made twice.
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
   /// The crack planes (crack_planes()), cut in order.
@@ -45,8 +48,10 @@ class FemLiteFracturer final : public Fracturer {
   /// solid by all of them (every piece each plane crosses) gives at least params.fragments fragments
   /// unless the grid runs out of candidate elements. Empty for one fragment.
   [[nodiscard]] Result<std::vector<Plane>> crack_planes(const Mesh& solid, const FractureParams& params) const;
-  /// The full analysis behind crack_planes().
-  [[nodiscard]] Result<FemLiteAnalysis> analyse(const Mesh& solid, const FractureParams& params) const;
+  /// The full analysis behind crack_planes(). With `pieces`, it receives the pieces the planes cut the
+  /// solid into (a plain mesh's: none for an attributed solid, whose corners must be tracked).
+  [[nodiscard]] Result<FemLiteAnalysis> analyse(const Mesh& solid, const FractureParams& params,
+                                                std::vector<SliceKernel::Piece>* pieces = nullptr) const;
   /// The settings.
   [[nodiscard]] const FemLiteSettings& settings() const { return settings_; }
 

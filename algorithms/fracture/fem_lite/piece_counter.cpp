@@ -1,7 +1,7 @@
 #include "algorithms/fracture/fem_lite/piece_counter.h"
 
 #include "algorithms/core/mass_properties.h"
-#include "algorithms/core/volume_components.h"
+#include "algorithms/fracture/recursive_slicing.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,38 +29,51 @@ bool misses(const Aabb& box, const Plane& plane) {
 }  // namespace
 
 PieceCounter::PieceCounter(const Mesh& solid) {
-  for (Mesh& part : volume_components(Mesh(solid))) append(std::move(part));
+  std::vector<SliceKernel::Piece> start = start_pieces(solid, nullptr);
+  order_parts(kernel_, start);
+  for (SliceKernel::Piece& piece : start) append(std::move(piece));
 }
 
-void PieceCounter::append(Mesh&& mesh) {
-  boxes_.push_back(bounding_box(mesh));
-  pieces_.push_back(std::move(mesh));
+void PieceCounter::append(SliceKernel::Piece&& piece) {
+  boxes_.push_back(bounding_box(piece.mesh));
+  pieces_.push_back(std::move(piece));
 }
 
 int PieceCounter::add(const Plane& plane, double min_volume) {
   // Cut first, commit only when no part is a sliver: pieces the plane misses are never copied.
-  std::vector<std::pair<std::size_t, std::vector<Mesh>>> cuts;
-  Mesh below;
-  Mesh above;
+  std::vector<std::pair<std::size_t, std::vector<SliceKernel::Piece>>> cuts;
+  std::vector<SliceKernel::Piece> below;
+  std::vector<SliceKernel::Piece> above;
   for (std::size_t i = 0; i < pieces_.size(); ++i) {
-    if (misses(boxes_[i], plane) || slicer_.slice(pieces_[i], plane, below, above) != SliceOutcome::cut) continue;
-    std::vector<Mesh> parts = volume_components(std::move(below));
-    for (Mesh& part : volume_components(std::move(above))) parts.push_back(std::move(part));
-    if (min_volume > 0.0)
-      for (const Mesh& part : parts)
-        if (signed_volume(part) < min_volume) return 0;
+    if (misses(boxes_[i], plane)) continue;
+    below.clear();
+    above.clear();
+    kernel_.split(pieces_[i], plane, below, above);
+    if (below.empty() || above.empty()) continue;
+    if (min_volume > 0.0) {
+      for (const std::vector<SliceKernel::Piece>* side : {&below, &above})
+        for (const SliceKernel::Piece& part : *side)
+          if (signed_volume(part.mesh) < min_volume) return 0;
+    }
+    // The order of slice_by_planes (recursive_slicing.h): each side's parts sorted, below first.
+    order_parts(kernel_, below);
+    order_parts(kernel_, above);
+    std::vector<SliceKernel::Piece> parts;
+    parts.reserve(below.size() + above.size());
+    for (SliceKernel::Piece& part : below) parts.push_back(std::move(part));
+    for (SliceKernel::Piece& part : above) parts.push_back(std::move(part));
     cuts.emplace_back(i, std::move(parts));
   }
   if (cuts.empty()) return 0;
   const int before = count();
-  std::vector<Mesh> old_pieces = std::move(pieces_);
+  std::vector<SliceKernel::Piece> old_pieces = std::move(pieces_);
   std::vector<Aabb> old_boxes = std::move(boxes_);
   pieces_.clear();
   boxes_.clear();
   std::size_t next_cut = 0;
   for (std::size_t i = 0; i < old_pieces.size(); ++i) {
     if (next_cut < cuts.size() && cuts[next_cut].first == i) {
-      for (Mesh& part : cuts[next_cut].second) append(std::move(part));
+      for (SliceKernel::Piece& part : cuts[next_cut].second) append(std::move(part));
       ++next_cut;
       continue;
     }
@@ -68,6 +81,11 @@ int PieceCounter::add(const Plane& plane, double min_volume) {
     boxes_.push_back(old_boxes[i]);
   }
   return count() - before;
+}
+
+std::vector<SliceKernel::Piece> PieceCounter::take_pieces() {
+  boxes_.clear();
+  return std::move(pieces_);
 }
 
 }  // namespace shatter

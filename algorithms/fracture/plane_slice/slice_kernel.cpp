@@ -1,0 +1,49 @@
+#include "algorithms/fracture/plane_slice/slice_kernel.h"
+
+#include "algorithms/core/volume_components.h"
+
+#include <utility>
+
+namespace shatter {
+
+void SliceKernel::split(const Piece& piece, const Plane& plane, std::vector<Piece>& below,
+                        std::vector<Piece>& above) const {
+  Mesh lower;
+  Mesh upper;
+  const SliceOutcome outcome = slicer_.slice(piece.mesh, plane, lower, upper, provenance_);
+  if (outcome == SliceOutcome::failed) ++failed_cuts_;
+  if (outcome != SliceOutcome::cut) return;
+  append_parts(std::move(lower), below);
+  append_parts(std::move(upper), above);
+}
+
+void SliceKernel::append_parts(Mesh&& mesh, std::vector<Piece>& out) {
+  for (Mesh& part : volume_components(std::move(mesh))) {
+    MassProperties mass = mass_properties(part);
+    out.push_back({std::move(part), mass});
+  }
+}
+
+std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid, const CornerProvenance* provenance) {
+  std::vector<SliceKernel::Piece> pieces;
+  SliceKernel::append_parts(provenance != nullptr ? provenance->tracked() : Mesh(solid), pieces);
+  return pieces;
+}
+
+Result<std::vector<Fragment>> to_fragments(std::vector<SliceKernel::Piece>&& pieces,
+                                           const CornerProvenance* provenance) {
+  std::vector<Fragment> out;
+  out.reserve(pieces.size());
+  for (SliceKernel::Piece& p : pieces) {
+    if (provenance == nullptr) {
+      out.push_back({std::move(p.mesh), p.mass});
+      continue;
+    }
+    Result<Mesh> resolved = provenance->resolve(std::move(p.mesh));
+    if (!resolved) return resolved.error();
+    out.push_back({std::move(*resolved), p.mass});
+  }
+  return out;
+}
+
+}  // namespace shatter

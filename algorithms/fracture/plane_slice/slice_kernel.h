@@ -1,0 +1,53 @@
+#pragma once
+/// The slicing kernel of recursive_slicing.h over MeshSlicer, shared by plane-slice's fractures and by
+/// fem-lite's crack search (piece_counter.h), whose pieces are then the fragments themselves.
+/// An attributed solid is cut as tracked pieces (corner_provenance.h): the corner values are
+/// evaluated once, on the fragments.
+
+#include "algorithms/core/corner_provenance.h"
+#include "algorithms/core/fragment.h"
+#include "algorithms/core/mass_properties.h"
+#include "algorithms/core/result.h"
+#include "algorithms/fracture/plane_slice/mesh_slicer.h"
+
+#include <vector>
+
+namespace shatter {
+
+/// Cuts pieces by planes (MeshSlicer), each side split into its volumes.
+class SliceKernel {
+ public:
+  /// Tracks the corners through `provenance` when given (an attributed solid), else cuts plain meshes.
+  explicit SliceKernel(CornerProvenance* provenance) : provenance_(provenance) {}
+
+  /// A closed piece with its mass properties.
+  struct Piece {
+    Mesh mesh;
+    MassProperties mass;
+  };
+
+  [[nodiscard]] Vec3 centroid(const Piece& piece) const { return piece.mass.centroid; }
+
+  /// The volumes of `piece` below and above `plane`, appended to `below` and `above`; both left as
+  /// they were when the plane does not cut the piece (or the cut could not be capped).
+  void split(const Piece& piece, const Plane& plane, std::vector<Piece>& below, std::vector<Piece>& above) const;
+
+  /// The volumes of `mesh` (each an outer shell with its cavities) as pieces.
+  static void append_parts(Mesh&& mesh, std::vector<Piece>& out);
+
+  /// Cuts the slicer could not cap; those pieces were kept whole.
+  [[nodiscard]] int failed_cuts() const { return failed_cuts_; }
+
+ private:
+  CornerProvenance* provenance_;
+  mutable MeshSlicer slicer_;
+  mutable int failed_cuts_ = 0;
+};
+
+/// The solid's volumes as pieces: tracked by `provenance` when given.
+std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid, const CornerProvenance* provenance);
+
+/// The pieces as fragments, their corner values evaluated through `provenance` when given.
+Result<std::vector<Fragment>> to_fragments(std::vector<SliceKernel::Piece>&& pieces, const CornerProvenance* provenance);
+
+}  // namespace shatter
