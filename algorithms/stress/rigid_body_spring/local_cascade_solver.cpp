@@ -144,6 +144,7 @@ Result<StressResult> LocalCascadeSolver::reevaluate(const Loads& loads, const St
   if (!window.nodes.empty() && 2 * window.nodes.size() >= free_nodes) return exact_.reevaluate(loads, previous, touched);
   WindowSolve solved;
   if (!window.nodes.empty()) solved = solve_window(window, previous, broken, f);
+  else judge_convergence(solved.report, solve_tolerance(settings_));  // nothing to solve: converged, as judged
 
   StressResult out;
   out.bonds = previous.bonds;
