@@ -17,7 +17,6 @@
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/fem_lite/element_stress.h"
 #include "algorithms/fracture/fem_lite/hex_grid.h"
-
 #include "algorithms/fracture/plane_slice/slice_kernel.h"
 
 #include <cstdint>

@@ -154,6 +154,37 @@ TEST_CASE("fem-lite: the same input gives the same planes and fragments, the pla
     CHECK((*fragments)[i].mesh.vertices == (*replayed)[i].mesh.vertices);
 }
 
+TEST_CASE("fem-lite: the crack search's pieces are bit for bit the fragments of its planes cut again",
+          "[fem-lite]") {
+  // fracture() takes the pieces the search cut; fracture_by_planes cuts the solid by the same planes
+  // from scratch. Every fragment must be the same: vertices, triangles, tags and mass, in order.
+  std::vector<Mesh> solids = {make_beam(), make_sphere(1.0, 24, 12), make_torus(1.0, 0.3, 24, 12)};
+  if (auto elephant = test::load_fixture_mesh("elephant.off")) solids.push_back(std::move(*elephant));
+  for (const Mesh& solid : solids) {
+    const Aabb box = bounding_box(solid);
+    const Vec3 top((box.min.x() + box.max.x()) / 2, (box.min.y() + box.max.y()) / 2, box.max.z());
+    for (const int n : {2, 9, 30}) {
+      const FractureParams params = downward_hit(top, n, 0.2 * box.diagonal());
+      const FemLiteFracturer fem;
+      auto planes = fem.crack_planes(solid, params);
+      auto fragments = fem.fracture(solid, params);
+      REQUIRE((planes.ok() && fragments.ok()));
+      auto replayed = PlaneSliceFracturer().fracture_by_planes(solid, *planes);
+      REQUIRE(replayed.ok());
+      REQUIRE(fragments->size() == replayed->size());
+      for (std::size_t i = 0; i < fragments->size(); ++i) {
+        const Fragment& f = (*fragments)[i];
+        const Fragment& r = (*replayed)[i];
+        CHECK(f.mesh.vertices == r.mesh.vertices);
+        CHECK(f.mesh.triangles == r.mesh.triangles);
+        CHECK(f.mesh.tags == r.mesh.tags);
+        CHECK(f.mass.volume == r.mass.volume);
+        CHECK(f.mass.centroid == r.mass.centroid);
+      }
+    }
+  }
+}
+
 TEST_CASE("fem-lite: bad settings and parameters are errors, not crashes", "[fem-lite]") {
   const Mesh beam = make_beam();
   const FractureParams params = downward_hit(Vec3(2, 0.25, 0.5), 4);
