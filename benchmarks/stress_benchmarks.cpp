@@ -24,6 +24,7 @@
 #include <span>
 #include <string>
 #include <tuple>
+#include <vector>
 
 namespace {
 
@@ -118,12 +119,13 @@ void evaluate_wall(benchmark::State& state, const Registries& registries, const 
 }
 
 /// The exact cascade of the same criterion (von Mises unless the model's name starts with "tresca"),
-/// made once per structure and strength: what an approximate model's outcome is set against.
+/// made once per structure, hole and strength: what an approximate model's outcome is set against.
 const PropagationResult& exact_cascade(const std::string& model_name, const SupportGraph& g,
                                        std::span<const int> broken, const Material& material) {
-  static std::map<std::tuple<bool, const SupportGraph*, double>, PropagationResult> cache;
+  static std::map<std::tuple<bool, const SupportGraph*, std::vector<int>, double>, PropagationResult> cache;
   const bool tresca = model_name.rfind("tresca", 0) == 0;
-  auto [slot, made] = cache.try_emplace({tresca, &g, material.tensile_strength});
+  auto [slot, made] =
+      cache.try_emplace({tresca, &g, std::vector<int>(broken.begin(), broken.end()), material.tensile_strength});
   if (made)
     slot->second = propagate(StrengthCriterionModel(tresca ? Criterion::tresca : Criterion::von_mises), g, Loads{},
                              material, broken).value();
