@@ -20,7 +20,10 @@ std::vector<SettingDoc> local_setting_docs() {
       {"hops", "bonds", std::to_string(LocalCascadeModel::kDefaultHops), "[1, 1000000]",
        "a cascade round re-solves the nodes within this many intact bonds of its breaks", {1, 2, 4, 8}}};
   for (SettingDoc& d : spring_solver_setting_docs())
-    if (d.key == "tolerance") docs.push_back(std::move(d));
+    if (d.key == "tolerance") {
+      d.description = "relative residual |K u - f| / |f| a converged solve may leave";
+      docs.push_back(std::move(d));
+    }
   return docs;
 }
 
