@@ -118,17 +118,15 @@ void evaluate_wall(benchmark::State& state, const Registries& registries, const 
   add_counters(state, g, report);
 }
 
-/// The exact cascade of the same criterion (von Mises unless the model's name starts with "tresca"),
+/// The exact cascade of the model's reference criterion (cascade_accuracy.h),
 /// made once per structure, hole and strength: what an approximate model's outcome is set against.
 const PropagationResult& exact_cascade(const std::string& model_name, const SupportGraph& g,
                                        std::span<const int> broken, const Material& material) {
-  static std::map<std::tuple<bool, const SupportGraph*, std::vector<int>, double>, PropagationResult> cache;
-  const bool tresca = model_name.rfind("tresca", 0) == 0;
+  static std::map<std::tuple<Criterion, const SupportGraph*, std::vector<int>, double>, PropagationResult> cache;
+  const Criterion criterion = reference_criterion(model_name);
   auto [slot, made] =
-      cache.try_emplace({tresca, &g, std::vector<int>(broken.begin(), broken.end()), material.tensile_strength});
-  if (made)
-    slot->second = propagate(StrengthCriterionModel(tresca ? Criterion::tresca : Criterion::von_mises), g, Loads{},
-                             material, broken).value();
+      cache.try_emplace({criterion, &g, std::vector<int>(broken.begin(), broken.end()), material.tensile_strength});
+  if (made) slot->second = propagate(StrengthCriterionModel(criterion), g, Loads{}, material, broken).value();
   return slot->second;
 }
 

@@ -31,8 +31,6 @@ struct Reference {
   StressResult first_round;        // the exact solve of that round
 };
 
-bool is_tresca(const std::string& model) { return model.rfind("tresca", 0) == 0; }
-
 /// The holed structure's start: `hole` flagged broken, no displacements (a cascade's start).
 StressResult holed(const SupportGraph& graph, const std::vector<int>& hole) {
   StressResult start;
@@ -140,6 +138,10 @@ AccuracyPoint measure(const std::string& case_name, const SupportGraph& graph, c
 
 }  // namespace
 
+Criterion reference_criterion(std::string_view model) {
+  return model.starts_with("tresca") ? Criterion::tresca : Criterion::von_mises;
+}
+
 double CascadeComparison::broken_share() const {
   return static_cast<double>(broken_mismatch) / std::max(1, reference_broken);
 }
@@ -201,7 +203,7 @@ Result<std::vector<AccuracyPoint>> cascade_accuracy(const Case& c, const Cascade
   for (const Criterion criterion : {Criterion::von_mises, Criterion::tresca}) {
     std::vector<std::string> mine;
     for (const std::string& m : models)
-      if (is_tresca(m) == (criterion == Criterion::tresca)) mine.push_back(m);
+      if (reference_criterion(m) == criterion) mine.push_back(m);
     if (mine.empty()) continue;
     // Strengths scaled so that the exact solve of the holed structure peaks at `overload`.
     SpringSolverSettings exact;

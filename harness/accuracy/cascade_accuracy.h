@@ -14,10 +14,12 @@
 #include "algorithms/core/result.h"
 #include "algorithms/registry/registries.h"
 #include "algorithms/stress/propagation.h"
+#include "algorithms/stress/strength_criterion.h"
 #include "harness/accuracy/accuracy_point.h"
 #include "harness/cases/case.h"
 
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace shatter {
@@ -28,6 +30,10 @@ struct CascadeAccuracyOptions {
   double overload = 1.5;             ///< the largest utilization of the holed structure's exact solve, > 1
   int repetitions = 3;               ///< timed cascades per point (one solver kept for all), >= 1
 };
+
+/// The criterion of the exact cascade a model's cascade is set against: Tresca for a model whose name
+/// starts with "tresca", von Mises otherwise.
+Criterion reference_criterion(std::string_view model);
 
 /// How one cascade's outcome differs from a reference cascade's on the same structure.
 struct CascadeComparison {

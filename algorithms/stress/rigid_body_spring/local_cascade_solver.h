@@ -16,11 +16,9 @@
 /// the exact cascade and its stresses against an exact round (docs/stress.md, section 6).
 
 #include "algorithms/stress/rigid_body_spring/bond_spring.h"
-#include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/solved_systems.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_solver.h"
 
-#include <array>
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -58,32 +56,13 @@ class LocalCascadeSolver final : public StressSolver {
                                                 std::span<const int> touched) override;
 
  private:
-  /// A bond's spring and stiffness blocks, made on first use and kept (the material is fixed).
-  struct BondBlocks {
-    BondSpring spring;
-    std::array<Matrix6, 4> blocks;
-  };
-  const BondBlocks& bond_blocks_of(int bond);
-
-  /// The exact solve of one window with its boundary held at `previous`: the window nodes'
-  /// displacements (6 per node, in window order) and the stresses of the bonds with an end in it.
-  struct WindowSolve {
-    std::vector<double> displacements;
-    std::vector<int> bonds;
-    std::vector<BondStress> stresses;
-    SolverReport report;
-  };
-  WindowSolve solve_window(const CascadeWindow& window, const StressResult& previous,
-                           std::span<const std::uint8_t> broken, std::span<const double> f);
-
   StrengthCriterionSolver exact_;
   Material material_;
   Criterion criterion_;
   SpringSolverSettings settings_;
   int hops_;
-  SolverMemory memory_;
-  std::vector<BondBlocks> bond_blocks_;    // #bonds once a window needed one
-  std::vector<std::uint8_t> blocks_made_;  // #bonds: 1 when bond_blocks_ holds the bond's  // the windows' analyses and factors (a window seen again reuses them)
+  SolverMemory memory_;              // the windows' analyses and factors (a window seen again reuses them)
+  std::vector<BondForces> forces_;   // #bonds: the forces of the last window's bonds (the others stale)
 };
 
 }  // namespace shatter
