@@ -42,12 +42,15 @@ Status check_node_loads(std::span<const double> node_loads) {
   return {};
 }
 
+bool values_finite(std::span<const double> values) {
+  unsigned bad = 0;
+  for (const double d : values) bad |= nonfinite_bit(d);
+  return bad == 0;
+}
+
 bool judge_finite(StressResult& result) {
-  bool finite = true;
-  for (const double d : result.displacements) finite = finite && std::isfinite(d);
-  for (const BondStress& b : result.bonds)
-    for (const double v : {b.normal_force, b.shear_force, b.bending_moment, b.torsion, b.sigma, b.tau, b.utilization})
-      finite = finite && std::isfinite(v);
+  bool finite = values_finite(result.displacements);
+  for (const BondStress& b : result.bonds) finite &= bond_finite(b);
   if (!finite) {
     result.report.finite = false;
     result.report.converged = false;

@@ -17,6 +17,8 @@
 #include "algorithms/core/result.h"
 #include "algorithms/core/material.h"
 
+#include <bit>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <string>
@@ -132,5 +134,20 @@ Status check_node_loads(std::span<const double> node_loads);
 /// Whether every displacement and bond figure of `result` is finite; marks its report not converged
 /// (and not finite) when one is not, so that no NaN or Inf is ever reported as a valid answer.
 bool judge_finite(StressResult& result);
+
+/// 1 when `x` is infinite or NaN (its exponent bits all set), else 0. An integer test, unlike a chain of
+/// std::isfinite, lets a loop over many values vectorise; inline for the loops over every bond.
+inline unsigned nonfinite_bit(double x) {
+  return (std::bit_cast<std::uint64_t>(x) & 0x7ff0000000000000ULL) == 0x7ff0000000000000ULL ? 1u : 0u;
+}
+
+/// Whether every figure of one bond is finite (judge_finite's test for a bond).
+inline bool bond_finite(const BondStress& b) {
+  return (nonfinite_bit(b.normal_force) | nonfinite_bit(b.shear_force) | nonfinite_bit(b.bending_moment) |
+          nonfinite_bit(b.torsion) | nonfinite_bit(b.sigma) | nonfinite_bit(b.tau) | nonfinite_bit(b.utilization)) == 0;
+}
+
+/// Whether every value of `values` is finite (judge_finite's test for the displacements).
+bool values_finite(std::span<const double> values);
 
 }  // namespace shatter

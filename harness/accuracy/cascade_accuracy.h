@@ -3,7 +3,7 @@
 /// the exact cascade of the same structure, loads and strengths.
 ///
 /// Design note: the stress family times one evaluation of the intact structure, which says nothing
-/// about a model that approximates only the rounds after the first (the windowed models,
+/// about a model that approximates the rounds of a cascade (the windowed models,
 /// local_cascade_solver.h). Here each case's structure loses the bonds of the fragment nearest its
 /// first impact (the impact's hole), its strengths are scaled so that the exact solve of the holed
 /// structure puts its most utilized bond at `overload` (so that a cascade runs: the case's own

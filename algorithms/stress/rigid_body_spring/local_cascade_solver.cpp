@@ -13,14 +13,19 @@ namespace {
 
 /// Which nodes belong to an anchored component, and the falling clusters (as graph_components and
 /// falling_clusters give them), by union-find without the per-component lists a round does not need.
+/// `ends` (#bonds) and `anchors` (#nodes) are the graph's bond ends and anchored flags in compact arrays
+/// (a pass over them reads a twentieth of what one over the graph's bonds reads); `parent` is scratch
+/// (#nodes), kept by the caller so that a round allocates nothing for it.
 struct NodeComponents {
   std::vector<std::uint8_t> anchored;          // #nodes: 1 when the node's component holds an anchor
   std::vector<std::vector<int>> falling;       // node lists of the unanchored components, by smallest node
+  std::size_t free_nodes = 0;                  // nodes of anchored components that are not anchors
 };
 
-NodeComponents node_components(const SupportGraph& graph, std::span<const std::uint8_t> broken) {
-  const std::size_t n = graph.nodes.size();
-  std::vector<int> parent(n);
+NodeComponents node_components(std::span<const std::array<int, 2>> ends, std::span<const std::uint8_t> anchors,
+                               std::span<const std::uint8_t> broken, std::vector<int>& parent) {
+  const std::size_t n = anchors.size();
+  parent.resize(n);
   for (std::size_t v = 0; v < n; ++v) parent[v] = static_cast<int>(v);
   const auto find = [&](int v) {
     while (parent[static_cast<std::size_t>(v)] != v) {
@@ -29,23 +34,29 @@ NodeComponents node_components(const SupportGraph& graph, std::span<const std::u
     }
     return v;
   };
-  for (std::size_t i = 0; i < graph.bonds.size(); ++i) {
+  for (std::size_t i = 0; i < ends.size(); ++i) {
     if (broken[i]) continue;
-    const int ra = find(graph.bonds[i].a), rb = find(graph.bonds[i].b);
+    const int ra = find(ends[i][0]), rb = find(ends[i][1]);
     if (ra != rb) parent[static_cast<std::size_t>(std::max(ra, rb))] = std::min(ra, rb);
   }
+  // Every root is its component's smallest node, so in node order a root comes before its members:
+  // one pass flattens the forest (parent[v] becomes v's root) and labels the components.
   NodeComponents out;
   out.anchored.assign(n, 0);
-  std::vector<int> root(n);
   for (std::size_t v = 0; v < n; ++v) {
-    root[v] = find(static_cast<int>(v));
-    if (graph.nodes[v].anchored) out.anchored[static_cast<std::size_t>(root[v])] = 1;
+    const std::size_t r = static_cast<std::size_t>(parent[static_cast<std::size_t>(parent[v])]);
+    parent[v] = static_cast<int>(r);
+    if (anchors[v]) out.anchored[r] = 1;
   }
-  std::vector<int> cluster(n, -1);
+  std::vector<int> cluster;
   for (std::size_t v = 0; v < n; ++v) {
-    const std::size_t r = static_cast<std::size_t>(root[v]);
+    const std::size_t r = static_cast<std::size_t>(parent[v]);
     out.anchored[v] = out.anchored[r];
-    if (out.anchored[v]) continue;
+    if (out.anchored[v]) {
+      out.free_nodes += anchors[v] ? 0 : 1;
+      continue;
+    }
+    if (cluster.empty()) cluster.assign(n, -1);
     if (cluster[r] < 0) {
       cluster[r] = static_cast<int>(out.falling.size());
       out.falling.emplace_back();
@@ -53,6 +64,17 @@ NodeComponents node_components(const SupportGraph& graph, std::span<const std::u
     out.falling[static_cast<std::size_t>(cluster[r])].push_back(static_cast<int>(v));
   }
   return out;
+}
+
+/// Whether two loads are the same, to the bit.
+bool same_loads(const Loads& x, const Loads& y) {
+  if (x.gravity != y.gravity || x.point_loads.size() != y.point_loads.size()) return false;
+  for (std::size_t i = 0; i < x.point_loads.size(); ++i) {
+    const PointLoad& p = x.point_loads[i];
+    const PointLoad& q = y.point_loads[i];
+    if (p.node != q.node || p.point != q.point || p.force != q.force) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -90,59 +112,110 @@ CascadeWindow cascade_window(const SupportGraph& graph, std::span<const std::uin
 }
 
 LocalCascadeSolver::LocalCascadeSolver(const SupportGraph& graph, const Material& material, Criterion criterion,
-                                       const SpringSolverSettings& settings, int hops)
+                                       const SpringSolverSettings& settings, int hops, bool exact_start)
     : exact_(graph, material, criterion, settings),
       material_(material),
       criterion_(criterion),
       settings_(settings),
-      hops_(hops) {
+      hops_(hops),
+      exact_start_(exact_start) {
   assert(hops >= 1);
+  bond_ends_.reserve(graph.bonds.size());
+  for (const Bond& b : graph.bonds) bond_ends_.push_back({b.a, b.b});
+  anchors_.reserve(graph.nodes.size());
+  for (const SupportNode& v : graph.nodes) anchors_.push_back(v.anchored ? 1 : 0);
 }
 
 LocalCascadeSolver::~LocalCascadeSolver() = default;
 
-Result<StressResult> LocalCascadeSolver::evaluate(const Loads& loads) { return exact_.evaluate(loads); }
+Result<StressResult> LocalCascadeSolver::evaluate(const Loads& loads) {
+  if (rest_loads_ && same_loads(*rest_loads_, loads)) return rest_;
+  Result<StressResult> r = exact_.evaluate(loads);
+  if (r) {
+    rest_ = *r;
+    rest_loads_ = loads;
+  }
+  return r;
+}
 
 Result<StressResult> LocalCascadeSolver::reevaluate(const Loads& loads, const StressResult& previous,
                                                     std::span<const int> touched) {
   const SupportGraph& graph = exact_.graph();
-  const std::size_t n = graph.nodes.size();
-  if (previous.displacements.size() != 6 * n) return exact_.reevaluate(loads, previous, touched);
+  if (previous.displacements.size() == 6 * graph.nodes.size()) return solve_window(loads, previous, touched);
+  assert(previous.bonds.size() == graph.bonds.size());
+  // A cascade's start: its breaks, windowed from the structure at rest.
+  std::vector<int> ends;
+  for (std::size_t i = 0; i < previous.bonds.size(); ++i)
+    if (previous.bonds[i].broken) {
+      ends.push_back(graph.bonds[i].a);
+      ends.push_back(graph.bonds[i].b);
+    }
+  if (exact_start_ || ends.empty()) return exact_.reevaluate(loads, previous, touched);
+  Result<StressResult> rest = evaluate(loads);
+  if (!rest) return rest.error();
+  // A structure whose rest state is not an answer (not converged) starts exactly, as without the window.
+  if (!rest->report.converged) return exact_.reevaluate(loads, previous, touched);
+  StressResult start = std::move(*rest);
+  for (std::size_t i = 0; i < previous.bonds.size(); ++i)
+    if (previous.bonds[i].broken) start.bonds[i].broken = true;
+  return solve_window(loads, start, ends);
+}
+
+Result<StressResult> LocalCascadeSolver::solve_window(const Loads& loads, const StressResult& previous,
+                                                      std::span<const int> touched) {
+  const SupportGraph& graph = exact_.graph();
   if (Status s = check_material(material_); !s) return s.error();
   if (Status s = check_loads(loads, graph); !s) return s.error();
   assert(previous.bonds.size() == graph.bonds.size());
 
-  std::vector<std::uint8_t> broken(graph.bonds.size(), 0);
-  for (std::size_t i = 0; i < broken.size(); ++i) broken[i] = previous.bonds[i].broken ? 1 : 0;
-  const NodeComponents components = node_components(graph, broken);
-  std::size_t free_nodes = 0;
-  for (std::size_t v = 0; v < n; ++v) free_nodes += components.anchored[v] && !graph.nodes[v].anchored ? 1 : 0;
-  std::vector<double> f = node_loads(graph, loads, material_);
-  if (Status s = check_node_loads(f); !s) return s.error();
+  // One pass over the previous bonds reads their broken flags and checks the figures of the intact
+  // ones (judge_finite's rule; broken bonds are zeroed below), so that what this round copies from
+  // `previous` is checked as it is read.
+  std::vector<std::uint8_t>& broken = broken_;
+  broken.resize(graph.bonds.size());
+  bool finite = true;
+  for (std::size_t i = 0; i < broken.size(); ++i) {
+    const BondStress& b = previous.bonds[i];
+    broken[i] = b.broken ? 1 : 0;
+    finite &= b.broken || bond_finite(b);
+  }
+  NodeComponents components = node_components(bond_ends_, anchors_, broken, parent_);
+  // The node loads depend on the loads only: made and checked once for each new `loads`.
+  if (!f_loads_ || !same_loads(*f_loads_, loads)) {
+    f_loads_.reset();
+    f_ = node_loads(graph, loads, material_);
+    if (Status s = check_node_loads(f_); !s) return s.error();
+    f_loads_ = loads;
+  }
 
   const CascadeWindow window = cascade_window(graph, broken, components.anchored, touched, hops_);
   // A window over half the free nodes or more costs about what the exact round costs, whose cascade
   // solver keeps its analyses and factors from round to round: take the exact round.
-  if (!window.nodes.empty() && 2 * window.nodes.size() >= free_nodes) return exact_.reevaluate(loads, previous, touched);
+  if (!window.nodes.empty() && 2 * window.nodes.size() >= components.free_nodes)
+    return exact_.reevaluate(loads, previous, touched);
 
   StressResult out;
   out.bonds = previous.bonds;
   out.displacements = previous.displacements;
-  out.falling_clusters = components.falling;
+  finite &= values_finite(out.displacements);
   // Broken bonds carry nothing; a falling cluster is never solved, as in the exact model.
-  for (std::size_t i = 0; i < broken.size(); ++i) {
-    if (broken[i]) {
-      out.bonds[i] = BondStress{.broken = true};
-    } else if (!components.anchored[static_cast<std::size_t>(graph.bonds[i].a)]) {
-      out.bonds[i] = BondStress{};
-    }
-  }
+  for (std::size_t i = 0; i < broken.size(); ++i)
+    if (broken[i]) out.bonds[i] = BondStress{.broken = true};
   for (const std::vector<int>& cluster : components.falling)
-    for (const int v : cluster) std::fill_n(out.displacements.begin() + 6 * static_cast<std::ptrdiff_t>(v), 6, 0.0);
+    for (const int v : cluster) {
+      std::fill_n(out.displacements.begin() + 6 * static_cast<std::ptrdiff_t>(v), 6, 0.0);
+      for (const int b : graph.node_bonds[static_cast<std::size_t>(v)])
+        if (!broken[static_cast<std::size_t>(b)]) out.bonds[static_cast<std::size_t>(b)] = BondStress{};
+    }
+  out.falling_clusters = std::move(components.falling);
 
   if (!window.nodes.empty()) {
     // The window is solved as a component (solve_component) whose bonds to the nodes outside it hold
     // those nodes fixed, as it holds anchored ones; their displacements move to the right-hand side.
+    // The corrections go into the kept node loads and come out again after the solve.
+    std::vector<double> window_loads(6 * window.nodes.size());
+    for (std::size_t k = 0; k < window.nodes.size(); ++k)
+      std::copy_n(f_.begin() + 6 * static_cast<std::ptrdiff_t>(window.nodes[k]), 6, window_loads.begin() + 6 * static_cast<std::ptrdiff_t>(k));
     std::vector<int> bonds;
     std::array<Matrix6, 4> blocks;
     for (const int v : window.nodes) {
@@ -161,18 +234,27 @@ Result<StressResult> LocalCascadeSolver::reevaluate(const Loads& loads, const St
         // blocks[2 x + y] couples node y's equations to node x's unknowns (x, y: 0 = a, 1 = b).
         bond_blocks(bond_spring(graph, b, material_), blocks);
         const Eigen::Map<const Eigen::Matrix<double, 6, 1>> u_other(out.displacements.data() + 6 * other);
-        Eigen::Map<Eigen::Matrix<double, 6, 1>>(f.data() + 6 * v) -= blocks[is_a ? 2 : 1] * u_other;
+        Eigen::Map<Eigen::Matrix<double, 6, 1>>(f_.data() + 6 * v) -= blocks[is_a ? 2 : 1] * u_other;
       }
     }
     if (forces_.size() != graph.bonds.size()) forces_.resize(graph.bonds.size());
-    out.report = solve_component(graph, window.nodes, bonds, f, material_, settings_, memory_,
+    out.report = solve_component(graph, window.nodes, bonds, f_, material_, settings_, memory_,
                                  out.displacements, forces_);
-    for (const int b : bonds)
-      out.bonds[static_cast<std::size_t>(b)] =
-          bond_stress(graph.bonds[static_cast<std::size_t>(b)], forces_[static_cast<std::size_t>(b)], material_, criterion_);
+    for (std::size_t k = 0; k < window.nodes.size(); ++k)
+      std::copy_n(window_loads.begin() + 6 * static_cast<std::ptrdiff_t>(k), 6, f_.begin() + 6 * static_cast<std::ptrdiff_t>(window.nodes[k]));
+    for (const int b : bonds) {
+      BondStress& stress = out.bonds[static_cast<std::size_t>(b)];
+      stress = bond_stress(graph.bonds[static_cast<std::size_t>(b)], forces_[static_cast<std::size_t>(b)], material_, criterion_);
+      finite &= bond_finite(stress);
+    }
+    for (const int v : window.nodes)
+      finite &= values_finite(std::span<const double>(out.displacements).subspan(6 * static_cast<std::size_t>(v), 6));
   }
   judge_convergence(out.report, solve_tolerance(settings_));
-  judge_finite(out);
+  if (!finite) {
+    out.report.finite = false;
+    out.report.converged = false;
+  }
   return out;
 }
 

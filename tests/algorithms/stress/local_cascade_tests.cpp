@@ -1,7 +1,9 @@
 // The windowed cascade models ("tresca-local", "von-mises-local", local_cascade_solver.h): the window
 // is every free node within `hops` bonds (Manhattan distance on a block wall), a window around the exact
 // solution gives it back (the Dirichlet sub-problem of an exact state; beam theory on a cantilever), a
-// window over the whole structure makes the exact cascade, and nothing outside the window moves.
+// window over the whole structure makes the exact cascade, nothing outside the window moves (a
+// cascade's start included, windowed from the exact state at rest), and a kept solver gives what a new
+// one gives.
 #include "algorithms/bonds/graph_components.h"
 #include "algorithms/stress/propagation.h"
 #include "algorithms/stress/rigid_body_spring/local_cascade_model.h"
@@ -27,8 +29,23 @@ namespace {
 /// The node of block (i, k) of a block wall nx wide (blocks are made row by row).
 int block(int nx, int i, int k) { return i + nx * k; }
 
-std::unique_ptr<StressModel> local_model(int hops, Criterion criterion = Criterion::von_mises) {
-  return std::make_unique<LocalCascadeModel>(criterion, SpringSolverSettings{}, hops);
+std::unique_ptr<StressModel> local_model(int hops, Criterion criterion = Criterion::von_mises, bool exact_start = false) {
+  return std::make_unique<LocalCascadeModel>(criterion, SpringSolverSettings{}, hops, exact_start);
+}
+
+/// Whether two results are the same bit for bit: bonds (every figure), displacements, clusters.
+bool same_result(const StressResult& x, const StressResult& y) {
+  if (x.bonds.size() != y.bonds.size() || x.displacements != y.displacements || x.falling_clusters != y.falling_clusters)
+    return false;
+  for (std::size_t i = 0; i < x.bonds.size(); ++i) {
+    const BondStress& a = x.bonds[i];
+    const BondStress& b = y.bonds[i];
+    if (a.broken != b.broken || a.normal_force != b.normal_force || a.shear_force != b.shear_force ||
+        a.bending_moment != b.bending_moment || a.torsion != b.torsion || a.sigma != b.sigma || a.tau != b.tau ||
+        a.utilization != b.utilization || a.tensile != b.tensile)
+      return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -179,6 +196,82 @@ TEST_CASE("local cascade: nothing outside the window changes, and a block cut lo
   }
 }
 
+TEST_CASE("local cascade: a cascade's start is the window around its breaks, from the structure at rest", "[stress][local-cascade]") {
+  const int nx = 9, nz = 8;
+  const SupportGraph g = block_wall(nx, nz);
+  Material material;
+  material.tensile_strength = material.compressive_strength = material.shear_strength = 1e12;  // nothing breaks
+  const std::unique_ptr<StressSolver> exact = StrengthCriterionModel(Criterion::von_mises).make_solver(g, material);
+  Result<StressResult> intact = exact->evaluate(Loads{});
+  REQUIRE(intact.ok());
+  // The start of a cascade: the bonds of block (4, 4) given broken, no displacements.
+  const int loose = block(nx, 4, 4);
+  StressResult start;
+  start.bonds.resize(g.bonds.size());
+  for (const int b : g.node_bonds[static_cast<std::size_t>(loose)]) start.bonds[static_cast<std::size_t>(b)].broken = true;
+  std::vector<int> all(static_cast<std::size_t>(g.node_count()));
+  for (int v = 0; v < g.node_count(); ++v) all[static_cast<std::size_t>(v)] = v;
+  const std::unique_ptr<StressSolver> local = local_model(1)->make_solver(g, material);
+  Result<StressResult> r = local->reevaluate(Loads{}, start, all);
+  REQUIRE(r.ok());
+  CHECK(r->report.converged);
+  CHECK(r->falling_clusters == std::vector<std::vector<int>>{{loose}});
+  // The window: one bond around the loose block's neighbours (the block itself falls). Outside it the
+  // displacements and bond figures are the exact intact ones, bit for bit; inside they moved.
+  std::set<int> window;
+  for (const int v : {block(nx, 3, 4), block(nx, 5, 4), block(nx, 4, 3), block(nx, 4, 5)})
+    for (const int b : g.node_bonds[static_cast<std::size_t>(v)]) {
+      window.insert(g.bonds[static_cast<std::size_t>(b)].a);
+      window.insert(g.bonds[static_cast<std::size_t>(b)].b);
+    }
+  window.erase(loose);
+  int moved = 0;
+  for (int v = 0; v < g.node_count(); ++v) {
+    if (v == loose) continue;
+    bool same = true;
+    for (int k = 0; k < 6; ++k)
+      same = same && r->displacements[static_cast<std::size_t>(6 * v + k)] == intact->displacements[static_cast<std::size_t>(6 * v + k)];
+    if (!window.count(v)) CHECK(same);
+    moved += same ? 0 : 1;
+  }
+  CHECK(moved > 0);
+  for (std::size_t b = 0; b < g.bonds.size(); ++b)
+    if (!window.count(g.bonds[b].a) && !window.count(g.bonds[b].b) && g.bonds[b].a != loose && g.bonds[b].b != loose)
+      CHECK(r->bonds[b].utilization == intact->bonds[b].utilization);
+
+  // With exact_start the start is the exact model's, bit for bit.
+  Result<StressResult> exact_first = exact->reevaluate(Loads{}, start, all);
+  Result<StressResult> local_exact = local_model(1, Criterion::von_mises, true)->make_solver(g, material)->reevaluate(Loads{}, start, all);
+  REQUIRE(exact_first.ok());
+  REQUIRE(local_exact.ok());
+  CHECK(same_result(*local_exact, *exact_first));
+  CHECK_FALSE(same_result(*r, *exact_first));
+}
+
+TEST_CASE("local cascade: a kept solver gives what a new one gives, whatever it solved before", "[stress][local-cascade]") {
+  const SupportGraph g = block_wall(12, 10);
+  Material weak;
+  weak.tensile_strength = 2e4;
+  const std::vector<int> hole = g.node_bonds[static_cast<std::size_t>(block(12, 5, 1))];
+  Loads heavy;
+  heavy.gravity = Vec3(0.0, 0.0, -12.0);
+  const std::unique_ptr<StressModel> model = local_model(2);
+  const std::unique_ptr<StressSolver> kept = model->make_solver(g, weak);
+  // Another load first (a structure at rest under other loads), then the cascade twice.
+  REQUIRE(propagate(*kept, heavy, hole).ok());
+  Result<PropagationResult> first = propagate(*kept, Loads{}, hole);
+  Result<PropagationResult> again = propagate(*kept, Loads{}, hole);
+  Result<PropagationResult> fresh = propagate(*model->make_solver(g, weak), Loads{}, hole);
+  REQUIRE(first.ok());
+  REQUIRE(again.ok());
+  REQUIRE(fresh.ok());
+  CHECK(fresh->rounds >= 2);
+  CHECK(first->break_order == fresh->break_order);
+  CHECK(again->break_order == fresh->break_order);
+  CHECK(same_result(first->result, fresh->result));
+  CHECK(same_result(again->result, fresh->result));
+}
+
 TEST_CASE("local cascade: both criteria are registered with their window size, which must be >= 1", "[stress][local-cascade][registry]") {
   const Registries r = test::builtin_registries();
   for (const char* name : {"tresca-local", "von-mises-local"}) {
@@ -193,5 +286,10 @@ TEST_CASE("local cascade: both criteria are registered with their window size, w
     Result<std::unique_ptr<StressModel>> zero = r.stress_models.create(name, {{"hops", 0.0}});
     REQUIRE_FALSE(zero.ok());
     CHECK(zero.error().message.find("settings.hops") != std::string::npos);
+    CHECK_FALSE(dynamic_cast<const LocalCascadeModel*>(m->get())->exact_start());
+    Result<std::unique_ptr<StressModel>> exact_start = r.stress_models.create(name, {{"exact_start", 1.0}});
+    REQUIRE(exact_start.ok());
+    CHECK(dynamic_cast<const LocalCascadeModel*>(exact_start->get())->exact_start());
+    CHECK_FALSE(r.stress_models.create(name, {{"exact_start", 2.0}}).ok());
   }
 }

@@ -177,8 +177,9 @@ TEST_CASE("cli: accuracy cascade family sets each model's cascade against the ex
   REQUIRE(r.exit_code == 0);
   REQUIRE(r.out.find("## cascade") != std::string::npos);
   const auto j = nlohmann::json::parse(slurp(json));
-  // tresca, von-mises, and each windowed model at its default and at hops 1, 2, 4 and 8.
-  REQUIRE(j.at("points").size() == 12);
+  // tresca, von-mises, and each windowed model at its default, at hops 1, 2, 4 and 8 and at exact_start
+  // 0 and 1.
+  REQUIRE(j.at("points").size() == 16);
   std::map<std::string, double> error;
   for (const auto& p : j.at("points")) {
     INFO(p.dump());
