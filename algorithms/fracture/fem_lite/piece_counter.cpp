@@ -26,6 +26,26 @@ bool misses(const Aabb& box, const Plane& plane) {
   return lo > margin || hi < -margin;
 }
 
+/// An upper bound of the volume of the smaller side of `mesh` (inside `box`) cut by `plane`: the side
+/// lies in the slab between the plane and its farthest vertex, and every section of the box by a plane
+/// of normal n fits in the box's shadow on that plane, of area sum |n_k| (product of the other sides).
+double smaller_side_bound(const Mesh& mesh, const Aabb& box, const Plane& plane) {
+  const Vec3 n = plane.normal.normalized();
+  double lo = 0.0;
+  double hi = 0.0;
+  for (const Vec3& v : mesh.vertices) {
+    const double d = n.dot(v - plane.point);
+    lo = std::min(lo, d);
+    hi = std::max(hi, d);
+  }
+  const Vec3 side = box.max - box.min;
+  const double shadow = std::abs(n.x()) * side.y() * side.z() + std::abs(n.y()) * side.x() * side.z() +
+                        std::abs(n.z()) * side.x() * side.y();
+  // A plane with every vertex on one side (in double) likely leaves the piece whole: last.
+  if (hi <= 0.0 || lo >= 0.0) return INFINITY;
+  return std::min(hi, -lo) * shadow;
+}
+
 }  // namespace
 
 PieceCounter::PieceCounter(const Mesh& solid) {
@@ -41,11 +61,20 @@ void PieceCounter::append(SliceKernel::Piece&& piece) {
 
 int PieceCounter::add(const Plane& plane, double min_volume) {
   // Cut first, commit only when no part is a sliver: pieces the plane misses are never copied.
+  std::vector<std::size_t> crossed;
+  for (std::size_t i = 0; i < pieces_.size(); ++i)
+    if (!misses(boxes_[i], plane)) crossed.push_back(i);
+  // Any sliver rejects the plane, whichever piece it comes from; so the pieces most likely to give
+  // one are cut first (a rejected plane then costs about one cut, not one per piece it crosses).
+  if (min_volume > 0.0 && crossed.size() > 1) {
+    std::vector<double> bound(pieces_.size());
+    for (const std::size_t i : crossed) bound[i] = smaller_side_bound(pieces_[i].mesh, boxes_[i], plane);
+    std::stable_sort(crossed.begin(), crossed.end(), [&](std::size_t a, std::size_t b) { return bound[a] < bound[b]; });
+  }
   std::vector<std::pair<std::size_t, std::vector<SliceKernel::Piece>>> cuts;
   std::vector<SliceKernel::Piece> below;
   std::vector<SliceKernel::Piece> above;
-  for (std::size_t i = 0; i < pieces_.size(); ++i) {
-    if (misses(boxes_[i], plane)) continue;
+  for (const std::size_t i : crossed) {
     below.clear();
     above.clear();
     kernel_.split(pieces_[i], plane, below, above);
@@ -64,6 +93,7 @@ int PieceCounter::add(const Plane& plane, double min_volume) {
     for (SliceKernel::Piece& part : above) parts.push_back(std::move(part));
     cuts.emplace_back(i, std::move(parts));
   }
+  std::sort(cuts.begin(), cuts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
   if (cuts.empty()) return 0;
   const int before = count();
   std::vector<SliceKernel::Piece> old_pieces = std::move(pieces_);

@@ -39,6 +39,37 @@ TEST_CASE("fem-lite: a plane that cuts off a sliver changes no piece", "[fem-lit
   CHECK(pieces.count() == 4);
 }
 
+TEST_CASE("fem-lite: a sliver from any piece a plane crosses rejects the plane, the others' cuts too", "[fem-lite]") {
+  // A unit box cut at z = 0.4: a 0.9 m tall piece and a 0.1 m tall one. The plane x = 0.5 - 1e-4 crosses
+  // both; it cuts 9e-5 m^3 off the tall one and 1e-5 m^3 off the short one.
+  const Mesh box = make_box(Vec3(1, 1, 1));
+  PieceCounter pieces(box);
+  PieceCounter same(box);
+  const Plane split{Vec3(0, 0, 0.4), Vec3(0, 0, 1)};
+  REQUIRE(pieces.add(split) == 1);
+  REQUIRE(same.add(split) == 1);
+  const Plane edge{Vec3(0.5 - 1e-4, 0, 0), Vec3(1, 0, 0)};
+  CHECK(pieces.add(edge, 5e-5) == 0);  // the short piece's sliver: nothing changes
+  CHECK(pieces.count() == 2);
+  const std::vector<SliceKernel::Piece> kept = pieces.take_pieces();
+  const std::vector<SliceKernel::Piece> expected = same.take_pieces();
+  REQUIRE(kept.size() == expected.size());
+  for (std::size_t i = 0; i < kept.size(); ++i) {
+    CHECK(kept[i].mesh.vertices == expected[i].mesh.vertices);
+    CHECK(kept[i].mesh.triangles == expected[i].mesh.triangles);
+  }
+  // Below the short piece's sliver both pieces are cut, in the order of the pieces.
+  PieceCounter loose(box);
+  REQUIRE(loose.add(split) == 1);
+  CHECK(loose.add(edge, 5e-6) == 2);
+  CHECK(loose.count() == 4);
+  const std::vector<SliceKernel::Piece> four = loose.take_pieces();
+  CHECK(signed_volume(four[0].mesh) == Approx(0.9 * (1 - 1e-4)).epsilon(1e-9));
+  CHECK(signed_volume(four[1].mesh) == Approx(0.9e-4).epsilon(1e-6));
+  CHECK(signed_volume(four[2].mesh) == Approx(0.1 * (1 - 1e-4)).epsilon(1e-9));
+  CHECK(signed_volume(four[3].mesh) == Approx(0.1e-4).epsilon(1e-6));
+}
+
 TEST_CASE("fem-lite: no fragment below min_piece_share of the mean fragment volume", "[fem-lite]") {
   std::vector<std::pair<std::string, Mesh>> solids = {{"sphere", make_sphere(1.0, 32, 16)},
                                                       {"beam", make_box(Vec3(4, 0.5, 0.5))}};
