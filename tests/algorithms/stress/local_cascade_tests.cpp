@@ -33,6 +33,35 @@ std::unique_ptr<StressModel> local_model(int hops, Criterion criterion = Criteri
   return std::make_unique<LocalCascadeModel>(criterion, SpringSolverSettings{}, hops, exact_start);
 }
 
+/// The window of one bond around the four neighbours of block `loose` (4, 4) of a wall nx wide,
+/// without the block itself (cut loose, it is in no anchored component).
+std::set<int> one_bond_around_neighbours(const SupportGraph& g, int nx, int loose) {
+  std::set<int> window;
+  for (const int v : {block(nx, 3, 4), block(nx, 5, 4), block(nx, 4, 3), block(nx, 4, 5)})
+    for (const int b : g.node_bonds[static_cast<std::size_t>(v)]) {
+      window.insert(g.bonds[static_cast<std::size_t>(b)].a);
+      window.insert(g.bonds[static_cast<std::size_t>(b)].b);
+    }
+  window.erase(loose);
+  return window;
+}
+
+/// Checks that every node but `loose` outside `window` kept its displacements of `before` bit for bit;
+/// returns the number of nodes that moved.
+int moved_inside_only(const SupportGraph& g, const StressResult& after, const StressResult& before,
+                      const std::set<int>& window, int loose) {
+  int moved = 0;
+  for (int v = 0; v < g.node_count(); ++v) {
+    if (v == loose) continue;
+    bool same = true;
+    for (int k = 0; k < 6; ++k)
+      same = same && after.displacements[static_cast<std::size_t>(6 * v + k)] == before.displacements[static_cast<std::size_t>(6 * v + k)];
+    if (!window.count(v)) CHECK(same);
+    moved += same ? 0 : 1;
+  }
+  return moved;
+}
+
 /// Whether two results are the same bit for bit: bonds (every figure), displacements, clusters.
 bool same_result(const StressResult& x, const StressResult& y) {
   if (x.bonds.size() != y.bonds.size() || x.displacements != y.displacements || x.falling_clusters != y.falling_clusters)
@@ -167,23 +196,8 @@ TEST_CASE("local cascade: nothing outside the window changes, and a block cut lo
   CHECK(r->falling_clusters == std::vector<std::vector<int>>{{loose}});
   for (int k = 0; k < 6; ++k) CHECK(r->displacements[static_cast<std::size_t>(6 * loose + k)] == 0.0);
   // The window: the four neighbours (the loose block is in no anchored component) and one bond beyond.
-  std::set<int> window;
-  for (const int v : {block(nx, 3, 4), block(nx, 5, 4), block(nx, 4, 3), block(nx, 4, 5)})
-    for (const int b : g.node_bonds[static_cast<std::size_t>(v)]) {
-      window.insert(g.bonds[static_cast<std::size_t>(b)].a);
-      window.insert(g.bonds[static_cast<std::size_t>(b)].b);
-    }
-  window.erase(loose);
-  int moved = 0;
-  for (int v = 0; v < g.node_count(); ++v) {
-    if (v == loose) continue;
-    bool same = true;
-    for (int k = 0; k < 6; ++k)
-      same = same && r->displacements[static_cast<std::size_t>(6 * v + k)] == intact->displacements[static_cast<std::size_t>(6 * v + k)];
-    if (!window.count(v)) CHECK(same);
-    moved += same ? 0 : 1;
-  }
-  CHECK(moved > 0);
+  const std::set<int> window = one_bond_around_neighbours(g, nx, loose);
+  CHECK(moved_inside_only(g, *r, *intact, window, loose) > 0);
   for (std::size_t b = 0; b < g.bonds.size(); ++b) {
     const Bond& bond = g.bonds[b];
     if (broken[b]) {
@@ -218,23 +232,8 @@ TEST_CASE("local cascade: a cascade's start is the window around its breaks, fro
   CHECK(r->falling_clusters == std::vector<std::vector<int>>{{loose}});
   // The window: one bond around the loose block's neighbours (the block itself falls). Outside it the
   // displacements and bond figures are the exact intact ones, bit for bit; inside they moved.
-  std::set<int> window;
-  for (const int v : {block(nx, 3, 4), block(nx, 5, 4), block(nx, 4, 3), block(nx, 4, 5)})
-    for (const int b : g.node_bonds[static_cast<std::size_t>(v)]) {
-      window.insert(g.bonds[static_cast<std::size_t>(b)].a);
-      window.insert(g.bonds[static_cast<std::size_t>(b)].b);
-    }
-  window.erase(loose);
-  int moved = 0;
-  for (int v = 0; v < g.node_count(); ++v) {
-    if (v == loose) continue;
-    bool same = true;
-    for (int k = 0; k < 6; ++k)
-      same = same && r->displacements[static_cast<std::size_t>(6 * v + k)] == intact->displacements[static_cast<std::size_t>(6 * v + k)];
-    if (!window.count(v)) CHECK(same);
-    moved += same ? 0 : 1;
-  }
-  CHECK(moved > 0);
+  const std::set<int> window = one_bond_around_neighbours(g, nx, loose);
+  CHECK(moved_inside_only(g, *r, *intact, window, loose) > 0);
   for (std::size_t b = 0; b < g.bonds.size(); ++b)
     if (!window.count(g.bonds[b].a) && !window.count(g.bonds[b].b) && g.bonds[b].a != loose && g.bonds[b].b != loose)
       CHECK(r->bonds[b].utilization == intact->bonds[b].utilization);
