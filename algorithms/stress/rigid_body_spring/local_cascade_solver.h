@@ -10,8 +10,9 @@
 /// no displacements yet) is a round like the others, windowed around its breaks from the intact
 /// structure's exact state under the same loads; the solver keeps that state (a structure at rest is
 /// solved once, as a game solves it when the level loads), and a new solver solves it first, so the
-/// result is the same either way. With `exact_start` the start is solved exactly instead. The nodes just outside keep their displacements (a fixed boundary), anchored nodes stay
-/// fixed, and the window's displacements are the exact solution of that local problem; the bonds with
+/// result is the same either way. With `exact_start` the start is solved exactly instead. The nodes
+/// just outside keep their displacements (a fixed boundary), anchored nodes stay fixed, and the
+/// window's displacements are the exact solution of that local problem; the bonds with
 /// an end in the window get new forces, the others keep theirs. Clusters cut loose fall exactly as in
 /// the exact model (the components are found on the whole graph every round). When the window holds
 /// a whole component, its solve is the exact one. What the window leaves out is an approximation with
