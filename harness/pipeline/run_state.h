@@ -50,6 +50,10 @@ struct RunState {
   std::unique_ptr<Fracturer> prefracturer;       ///< pre-fracture algorithm (none for explicit planes)
   std::unique_ptr<Fracturer> runtime_fracturer;  ///< runtime algorithm
   std::unique_ptr<StressModel> stress_model;     ///< stress model
+  /// The stress model's solver of result.graph, made at the first solve and kept for the run (every
+  /// event's cascade reuses what it keeps: factors, a windowed model's structure at rest); a solver
+  /// gives what a new one would, bit for bit (stress_model.h).
+  std::unique_ptr<StressSolver> stress_solver;
   int runtime_fragments = 0;                     ///< pieces requested per hit fragment
   Loads loads;                                   ///< gravity of the case
 

@@ -29,7 +29,11 @@ Status solve_structure_stress(RunState& run, bool after_hit, StageClocks& clocks
     if (r.broken[b]) broken.push_back(static_cast<int>(b));
   PropagationSettings settings;
   settings.resolve_everything = run.options.no_skip;
-  auto p = propagate(*run.stress_model, r.graph, run.loads, run.spec.material, broken, settings);
+  // The graph is set at setup and only its broken flags change, so one solver serves the whole run
+  // (under --no-skip every solve gets a new one: nothing kept from an earlier solve).
+  if (!run.stress_solver || &run.stress_solver->graph() != &r.graph || run.options.no_skip)
+    run.stress_solver = run.stress_model->make_solver(r.graph, run.spec.material);
+  auto p = propagate(*run.stress_solver, run.loads, broken, settings);
   if (!p) return Error{run.spec.name + ": stress: " + p.error().message};
   for (std::size_t b = 0; b < r.broken.size(); ++b)
     if (p->result.bonds[b].broken) r.broken[b] = 1;

@@ -118,6 +118,18 @@ TEST_CASE("pipeline: skipping and the forced full run give the same fragments, b
     REQUIRE(lean.stress_rounds > 0);
     REQUIRE(!lean.falling_clusters.empty());
   }
+  SECTION("a windowed cascade with the run's kept solver (its structure at rest) and with new ones") {
+    const PreparedCase p = weak_fixed_beam();
+    RunOptions o;
+    o.frames = 12;
+    o.stress_model = "von-mises-local";
+    const RunResult lean = run(p, o);
+    o.no_skip = true;
+    const RunResult full = run(p, o);
+    require_same_outcome(lean, full);
+    REQUIRE(lean.stress_rounds > 0);
+    REQUIRE(!lean.falling_clusters.empty());
+  }
   SECTION("no gravity: the stress solve is skipped, and solving changes nothing") {
     PreparedCase p = prepared("cantilever");
     p.spec.gravity = Vec3::Zero();
