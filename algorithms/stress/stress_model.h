@@ -32,12 +32,14 @@ struct PointLoad {
   int node = 0;                   ///< fragment index
   Vec3 point = Vec3::Zero();      ///< point of application, m
   Vec3 force = Vec3::Zero();      ///< N
+  bool operator==(const PointLoad&) const = default;
 };
 
 /// What the structure carries.
 struct Loads {
   Vec3 gravity = Vec3(0.0, 0.0, -9.81);   ///< m/s^2, acts on every fragment's mass at its centroid
   std::vector<PointLoad> point_loads;     ///< extra forces, N
+  bool operator==(const Loads&) const = default;
 };
 
 /// Forces, stresses and verdict of one bond. Magnitudes are >= 0 unless said otherwise.

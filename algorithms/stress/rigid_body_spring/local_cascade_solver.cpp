@@ -66,17 +66,6 @@ NodeComponents node_components(std::span<const std::array<int, 2>> ends, std::sp
   return out;
 }
 
-/// Whether two loads are the same, to the bit.
-bool same_loads(const Loads& x, const Loads& y) {
-  if (x.gravity != y.gravity || x.point_loads.size() != y.point_loads.size()) return false;
-  for (std::size_t i = 0; i < x.point_loads.size(); ++i) {
-    const PointLoad& p = x.point_loads[i];
-    const PointLoad& q = y.point_loads[i];
-    if (p.node != q.node || p.point != q.point || p.force != q.force) return false;
-  }
-  return true;
-}
-
 }  // namespace
 
 CascadeWindow cascade_window(const SupportGraph& graph, std::span<const std::uint8_t> broken,
@@ -129,7 +118,7 @@ LocalCascadeSolver::LocalCascadeSolver(const SupportGraph& graph, const Material
 LocalCascadeSolver::~LocalCascadeSolver() = default;
 
 Result<StressResult> LocalCascadeSolver::evaluate(const Loads& loads) {
-  if (rest_loads_ && same_loads(*rest_loads_, loads)) return rest_;
+  if (rest_loads_ == loads) return rest_;
   Result<StressResult> r = exact_.evaluate(loads);
   if (r) {
     rest_ = *r;
@@ -146,10 +135,7 @@ Result<StressResult> LocalCascadeSolver::reevaluate(const Loads& loads, const St
   // A cascade's start: its breaks, windowed from the structure at rest.
   std::vector<int> ends;
   for (std::size_t i = 0; i < previous.bonds.size(); ++i)
-    if (previous.bonds[i].broken) {
-      ends.push_back(graph.bonds[i].a);
-      ends.push_back(graph.bonds[i].b);
-    }
+    if (previous.bonds[i].broken) ends.insert(ends.end(), bond_ends_[i].begin(), bond_ends_[i].end());
   if (exact_start_ || ends.empty()) return exact_.reevaluate(loads, previous, touched);
   Result<StressResult> rest = evaluate(loads);
   if (!rest) return rest.error();
@@ -181,7 +167,7 @@ Result<StressResult> LocalCascadeSolver::solve_window(const Loads& loads, const 
   }
   NodeComponents components = node_components(bond_ends_, anchors_, broken, parent_);
   // The node loads depend on the loads only: made and checked once for each new `loads`.
-  if (!f_loads_ || !same_loads(*f_loads_, loads)) {
+  if (f_loads_ != loads) {
     f_loads_.reset();
     f_ = node_loads(graph, loads, material_);
     if (Status s = check_node_loads(f_); !s) return s.error();
