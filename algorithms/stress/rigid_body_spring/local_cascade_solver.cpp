@@ -107,7 +107,8 @@ LocalCascadeSolver::LocalCascadeSolver(const SupportGraph& graph, const Material
       criterion_(criterion),
       settings_(settings),
       hops_(hops),
-      exact_start_(exact_start) {
+      exact_start_(exact_start),
+      stiffness_(graph, material) {
   assert(hops >= 1);
   bond_ends_.reserve(graph.bonds.size());
   for (const Bond& b : graph.bonds) bond_ends_.push_back({b.a, b.b});
@@ -202,30 +203,36 @@ Result<StressResult> LocalCascadeSolver::solve_window(const Loads& loads, const 
     std::vector<double> window_loads(6 * window.nodes.size());
     for (std::size_t k = 0; k < window.nodes.size(); ++k)
       std::copy_n(f_.begin() + 6 * static_cast<std::ptrdiff_t>(window.nodes[k]), 6, window_loads.begin() + 6 * static_cast<std::ptrdiff_t>(k));
-    std::vector<int> bonds;
-    std::array<Matrix6, 4> blocks;
+    std::vector<int>& bonds = window_bonds_;
+    bonds.clear();
+    std::vector<std::array<int, 2>>& boundary = boundary_;  // (window node, bond to a node outside)
+    boundary.clear();
     for (const int v : window.nodes) {
       const int i = window.index[static_cast<std::size_t>(v)];
       for (const int b : graph.node_bonds[static_cast<std::size_t>(v)]) {
         if (broken[static_cast<std::size_t>(b)]) continue;
-        const Bond& bond = graph.bonds[static_cast<std::size_t>(b)];
-        const bool is_a = bond.a == v;
-        const int other = is_a ? bond.b : bond.a;
+        const int other = bond_ends_[static_cast<std::size_t>(b)][0] == v ? bond_ends_[static_cast<std::size_t>(b)][1]
+                                                                          : bond_ends_[static_cast<std::size_t>(b)][0];
         const int j = window.index[static_cast<std::size_t>(other)];
         if (j >= 0) {
           if (j > i) bonds.push_back(b);  // a bond inside: once
           continue;
         }
         bonds.push_back(b);
-        // blocks[2 x + y] couples node y's equations to node x's unknowns (x, y: 0 = a, 1 = b).
-        bond_blocks(bond_spring(graph, b, material_), blocks);
-        const Eigen::Map<const Eigen::Matrix<double, 6, 1>> u_other(out.displacements.data() + 6 * other);
-        Eigen::Map<Eigen::Matrix<double, 6, 1>>(f_.data() + 6 * v) -= blocks[is_a ? 2 : 1] * u_other;
+        boundary.push_back({v, b});
       }
+    }
+    stiffness_.prepare(bonds);
+    for (const auto [v, b] : boundary) {
+      // blocks[2 x + y] couples node y's equations to node x's unknowns (x, y: 0 = a, 1 = b).
+      const bool is_a = bond_ends_[static_cast<std::size_t>(b)][0] == v;
+      const int other = bond_ends_[static_cast<std::size_t>(b)][is_a ? 1 : 0];
+      const Eigen::Map<const Eigen::Matrix<double, 6, 1>> u_other(out.displacements.data() + 6 * other);
+      Eigen::Map<Eigen::Matrix<double, 6, 1>>(f_.data() + 6 * v) -= stiffness_.at(b).blocks[is_a ? 2 : 1] * u_other;
     }
     if (forces_.size() != graph.bonds.size()) forces_.resize(graph.bonds.size());
     out.report = solve_component(graph, window.nodes, bonds, f_, material_, settings_, memory_,
-                                 out.displacements, forces_);
+                                 out.displacements, forces_, &stiffness_);
     for (std::size_t k = 0; k < window.nodes.size(); ++k)
       std::copy_n(window_loads.begin() + 6 * static_cast<std::ptrdiff_t>(k), 6, f_.begin() + 6 * static_cast<std::ptrdiff_t>(window.nodes[k]));
     for (const int b : bonds) {

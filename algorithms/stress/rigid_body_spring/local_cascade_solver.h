@@ -20,6 +20,7 @@
 /// the exact cascade and its stresses against an exact round (docs/stress.md, section 6).
 
 #include "algorithms/stress/rigid_body_spring/bond_spring.h"
+#include "algorithms/stress/rigid_body_spring/bond_stiffness_cache.h"
 #include "algorithms/stress/rigid_body_spring/solved_systems.h"
 #include "algorithms/stress/rigid_body_spring/strength_criterion_solver.h"
 
@@ -84,6 +85,9 @@ class LocalCascadeSolver final : public StressSolver {
   std::vector<int> parent_;          // #nodes: a round's union-find (scratch)
   SolverMemory memory_;              // the windows' analyses and factors (a window seen again reuses them)
   std::vector<BondForces> forces_;   // #bonds: the forces of the last window's bonds (the others stale)
+  BondStiffnessCache stiffness_;     // the springs and blocks of every bond a window reached
+  std::vector<int> window_bonds_;    // a round's window bonds (scratch)
+  std::vector<std::array<int, 2>> boundary_;  // a round's (window node, bond leaving the window) (scratch)
 };
 
 }  // namespace shatter

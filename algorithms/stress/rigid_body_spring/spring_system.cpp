@@ -39,7 +39,8 @@ std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, co
 SolverReport solve_component(const SupportGraph& graph, std::span<const int> nodes, std::span<const int> bonds,
                              std::span<const double> loads, const Material& material,
                              const SpringSolverSettings& settings, SolverMemory& memory,
-                             std::vector<double>& displacements, std::vector<BondForces>& forces) {
+                             std::vector<double>& displacements, std::vector<BondForces>& forces,
+                             BondStiffnessCache* stiffness) {
   // Local numbering of the free (not anchored) nodes; anchored ones keep -1.
   std::vector<int> local(graph.nodes.size(), -1);
   std::vector<int> free_nodes;
@@ -53,26 +54,34 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
   SolverReport report;
   report.unknowns = n;
 
+  // Each bond's spring and blocks: the caller's kept ones, or computed here.
+  std::vector<BondStiffness> own;
+  std::vector<const BondStiffness*> parts(bonds.size());
+  if (stiffness != nullptr) {
+    stiffness->prepare(bonds);
+    for (std::size_t q = 0; q < bonds.size(); ++q) parts[q] = &stiffness->at(bonds[q]);
+  } else {
+    own.resize(bonds.size());
+    for (std::size_t q = 0; q < bonds.size(); ++q) {
+      compute_bond_stiffness(graph, bonds[q], material, own[q]);
+      parts[q] = &own[q];
+    }
+  }
   // K in the pattern of the component's bonds (stiffness_pattern.h), summed in bond order.
-  std::vector<BondSpring> springs(bonds.size());
-  std::vector<Matrix6> blocks(4 * bonds.size());  // bond q from 4 q on; Matrix6 elements are not zeroed
   std::vector<std::array<int, 2>> ends(bonds.size());
   std::vector<std::array<std::uint64_t, 4>> masks(bonds.size());
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
-    springs[q] = bond_spring(graph, bonds[q], material);
-    const std::span<Matrix6, 4> four(blocks.data() + 4 * q, 4);
-    bond_blocks(springs[q], four);
-    for (std::size_t block = 0; block < 4; ++block) masks[q][block] = nonzero_mask(four[block]);
+    masks[q] = parts[q]->masks;
     ends[q] = {local[static_cast<std::size_t>(e.a)], local[static_cast<std::size_t>(e.b)]};
   }
   StiffnessPattern pattern = build_stiffness_pattern(nf, ends, masks);
-  SparseMatrix stiffness;
-  stiffness.swap(pattern.matrix);  // Eigen's SparseMatrix copies on a move
+  SparseMatrix stiffness_matrix;
+  stiffness_matrix.swap(pattern.matrix);  // Eigen's SparseMatrix copies on a move
   for (std::size_t q = 0; q < bonds.size(); ++q)
     for (std::size_t block = 0; block < 4; ++block)
       if (const int p = pattern.bond_pairs[q][block]; p >= 0)
-        add_pair_block(stiffness.valuePtr(), blocks[4 * q + block], pattern.pairs[static_cast<std::size_t>(p)]);
+        add_pair_block(stiffness_matrix.valuePtr(), parts[q]->blocks[block], pattern.pairs[static_cast<std::size_t>(p)]);
 
   Vector f(n), u(n);
   for (int i = 0; i < nf; ++i)
@@ -82,7 +91,7 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
       u[6 * i + k] = displacements[g];
     }
   if (n > 0 && f.squaredNorm() > 0.0) {
-    report = solve_linear(std::move(stiffness), f, u, settings, memory);
+    report = solve_linear(std::move(stiffness_matrix), f, u, settings, memory);
     report.solves = 1;
     report.unknowns = n;
   } else {
@@ -98,7 +107,7 @@ SolverReport solve_component(const SupportGraph& graph, std::span<const int> nod
   // Bond forces: the spring forces from the relative motion, expressed in the bond frame.
   for (std::size_t q = 0; q < bonds.size(); ++q) {
     const Bond& e = graph.bonds[static_cast<std::size_t>(bonds[q])];
-    forces[static_cast<std::size_t>(bonds[q])] = bond_forces(e, springs[q], displacements.data() + 6 * static_cast<std::size_t>(e.a),
+    forces[static_cast<std::size_t>(bonds[q])] = bond_forces(e, parts[q]->spring, displacements.data() + 6 * static_cast<std::size_t>(e.a),
                                                              displacements.data() + 6 * static_cast<std::size_t>(e.b));
   }
   return report;

@@ -16,6 +16,7 @@
 #include "algorithms/bonds/support_graph.h"
 #include "algorithms/core/material.h"
 #include "algorithms/stress/rigid_body_spring/bond_spring.h"
+#include "algorithms/stress/rigid_body_spring/bond_stiffness_cache.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/stress_model.h"
 
@@ -30,10 +31,12 @@ std::vector<double> node_loads(const SupportGraph& graph, const Loads& loads, co
 /// Solves the component made of `nodes` (with at least one anchored) and its intact `bonds`.
 /// `displacements` (6 #nodes, global) is read as the warm start of the component's nodes and
 /// overwritten with the solution; `forces` (#bonds, global) receives the forces of `bonds`. The solve
-/// reuses and keeps its work in `memory` (linear_solve.h).
+/// reuses and keeps its work in `memory` (linear_solve.h), and takes the bonds' springs and blocks from
+/// `stiffness` when given (same numbers, computed once per bond: bond_stiffness_cache.h).
 SolverReport solve_component(const SupportGraph& graph, std::span<const int> nodes, std::span<const int> bonds,
                              std::span<const double> loads, const Material& material,
                              const SpringSolverSettings& settings, SolverMemory& memory,
-                             std::vector<double>& displacements, std::vector<BondForces>& forces);
+                             std::vector<double>& displacements, std::vector<BondForces>& forces,
+                             BondStiffnessCache* stiffness = nullptr);
 
 }  // namespace shatter
