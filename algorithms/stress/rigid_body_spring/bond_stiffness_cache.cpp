@@ -11,7 +11,11 @@ void compute_bond_stiffness(const SupportGraph& graph, int bond, const Material&
 }
 
 BondStiffnessCache::BondStiffnessCache(const SupportGraph& graph, const Material& material)
-    : graph_(&graph), material_(material), slot_(graph.bonds.size(), -1) {}
+    : graph_(&graph), material_(material), slot_(graph.bonds.size(), -1) {
+  // Room for every bond at once: entries never move (references stay valid), and the pages of bonds no
+  // window reaches are never touched.
+  entries_.reserve(graph.bonds.size());
+}
 
 void BondStiffnessCache::prepare(std::span<const int> bonds) {
   for (const int b : bonds) {

@@ -32,7 +32,7 @@ struct BondStiffness {
 class BondStiffnessCache {
  public:
   BondStiffnessCache(const SupportGraph& graph, const Material& material);
-  /// Computes what `bonds` need that is not kept yet. References from `at` stay valid until the next call.
+  /// Computes what `bonds` need that is not kept yet. References from `at` stay valid for the cache's life.
   void prepare(std::span<const int> bonds);
   /// Bond `bond`'s stiffness; it must have been prepared.
   [[nodiscard]] const BondStiffness& at(int bond) const {
