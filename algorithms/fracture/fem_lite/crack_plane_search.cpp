@@ -25,7 +25,8 @@ bool too_close(const Vec3& centre, std::span<const Plane> planes, const Vec3& ce
 }  // namespace
 
 CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::span<const ElementStress> stresses,
-                                const CrackSearchOptions& options, std::vector<SliceKernel::Piece>* pieces_out) {
+                                const CrackSearchOptions& options, std::vector<SliceKernel::Piece>* pieces_out,
+                                CornerProvenance* provenance) {
   CrackSearch search;
   const std::size_t count = stresses.size();
   for (const ElementStress& s : stresses)
@@ -43,7 +44,7 @@ CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::spa
   for (std::size_t e = 0; e < count; ++e)
     normals[e] = stresses[e].direction.squaredNorm() > 0.0 ? stresses[e].direction : rng.unit_vector();
 
-  PieceCounter pieces(solid);
+  PieceCounter pieces(solid, provenance);
   const double min_volume = options.min_piece_share * signed_volume(solid) / std::max(options.fragments, 1);
   std::vector<bool> tried(count, false);
   std::vector<bool> sliver(count, false);  // skipped for a sliver: tried again if the count is short

@@ -46,8 +46,10 @@ struct CrackSearch {
 
 /// Searches the crack planes of `solid` (closed, outward) from the element stresses of `grid`
 /// (#E). Deterministic in `options.seed`. With `pieces`, it receives the pieces the planes cut the
-/// solid into, as PlaneSliceFracturer::fracture_by_planes makes them from a plain mesh.
+/// solid into, as PlaneSliceFracturer::fracture_by_planes makes them: from a plain mesh, or with their
+/// corners tracked through `provenance` when given (an attributed solid's; the planes are the same).
 CrackSearch search_crack_planes(const Mesh& solid, const HexGrid& grid, std::span<const ElementStress> stresses,
-                                const CrackSearchOptions& options, std::vector<SliceKernel::Piece>* pieces = nullptr);
+                                const CrackSearchOptions& options, std::vector<SliceKernel::Piece>* pieces = nullptr,
+                                CornerProvenance* provenance = nullptr);
 
 }  // namespace shatter

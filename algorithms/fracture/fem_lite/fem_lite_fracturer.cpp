@@ -9,12 +9,14 @@
 
 #include <algorithm>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace shatter {
 
 Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const FractureParams& params,
-                                                  std::vector<SliceKernel::Piece>* pieces) const {
+                                                  std::vector<SliceKernel::Piece>* pieces,
+                                                  CornerProvenance* provenance) const {
   if (Status s = check_fracture_params(solid, params, "fem-lite"); !s) return s.error();
   if (Status s = check_fem_lite_settings(settings_); !s) return s.error();
   FemLiteAnalysis analysis;
@@ -47,8 +49,10 @@ Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const Fract
   options.tensile_strength = settings_.material.tensile_strength;
   options.seed = params.seed;
   options.min_piece_share = settings_.min_piece_share;
-  CrackSearch search =
-      search_crack_planes(solid, grid, stresses, options, has_attributes(solid) ? nullptr : pieces);
+  // An attributed solid's pieces are only of use with their corners tracked.
+  const bool tracked = has_attributes(solid);
+  if (tracked && provenance == nullptr) pieces = nullptr;
+  CrackSearch search = search_crack_planes(solid, grid, stresses, options, pieces, tracked ? provenance : nullptr);
   analysis.planes = std::move(search.planes);
   analysis.fragments = search.fragments;
   analysis.over_strength = search.over_strength;
@@ -62,13 +66,18 @@ Result<std::vector<Plane>> FemLiteFracturer::crack_planes(const Mesh& solid, con
 }
 
 Result<std::vector<Fragment>> FemLiteFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
+  // An attributed solid's corners are tracked through the search's cuts, as fracture_by_planes tracks
+  // them (the values are read, and checked, when the fragments are made).
+  std::optional<CornerProvenance> provenance;
+  if (has_attributes(solid)) provenance.emplace(solid, "fem-lite");
+  CornerProvenance* tracking = provenance ? &*provenance : nullptr;
   std::vector<SliceKernel::Piece> pieces;
-  Result<FemLiteAnalysis> analysis = analyse(solid, params, &pieces);
+  Result<FemLiteAnalysis> analysis = analyse(solid, params, &pieces, tracking);
   if (!analysis) return analysis.error();
   // The search's pieces are fracture_by_planes' fragments; it runs itself for what the search did not
-  // cut (one fragment, an attributed solid) and for its own error past the fragment limit.
+  // cut (one fragment) and for its own error past the fragment limit.
   if (!pieces.empty() && pieces.size() <= static_cast<std::size_t>(kMaxFragments))
-    return to_fragments(std::move(pieces), nullptr);
+    return to_fragments(std::move(pieces), tracking);
   return PlaneSliceFracturer().fracture_by_planes(solid, analysis->planes, kMaxFragments, params.verdicts);
 }
 

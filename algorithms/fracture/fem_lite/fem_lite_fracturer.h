@@ -49,9 +49,11 @@ class FemLiteFracturer final : public Fracturer {
   /// unless the grid runs out of candidate elements. Empty for one fragment.
   [[nodiscard]] Result<std::vector<Plane>> crack_planes(const Mesh& solid, const FractureParams& params) const;
   /// The full analysis behind crack_planes(). With `pieces`, it receives the pieces the planes cut the
-  /// solid into (a plain mesh's: none for an attributed solid, whose corners must be tracked).
+  /// solid into: a plain mesh's, or an attributed solid's with their corners tracked through
+  /// `provenance` (made for `solid`); an attributed solid without `provenance` gets none.
   [[nodiscard]] Result<FemLiteAnalysis> analyse(const Mesh& solid, const FractureParams& params,
-                                                std::vector<SliceKernel::Piece>* pieces = nullptr) const;
+                                                std::vector<SliceKernel::Piece>* pieces = nullptr,
+                                                CornerProvenance* provenance = nullptr) const;
   /// The settings.
   [[nodiscard]] const FemLiteSettings& settings() const { return settings_; }
 

@@ -48,8 +48,8 @@ double smaller_side_bound(const Mesh& mesh, const Aabb& box, const Plane& plane)
 
 }  // namespace
 
-PieceCounter::PieceCounter(const Mesh& solid) {
-  std::vector<SliceKernel::Piece> start = start_pieces(solid, nullptr);
+PieceCounter::PieceCounter(const Mesh& solid, CornerProvenance* provenance) : kernel_(provenance) {
+  std::vector<SliceKernel::Piece> start = start_pieces(solid, provenance);
   order_parts(kernel_, start);
   for (SliceKernel::Piece& piece : start) append(std::move(piece));
 }

@@ -14,8 +14,10 @@ namespace shatter {
 /// The pieces of a solid under the planes added so far.
 class PieceCounter {
  public:
-  /// Starts from the connected parts of `solid` (closed, outward), cut as plain meshes.
-  explicit PieceCounter(const Mesh& solid);
+  /// Starts from the connected parts of `solid` (closed, outward), cut as plain meshes, or with their
+  /// corners tracked through `provenance` (an attributed solid's, as fracture_by_planes tracks them;
+  /// it must outlive the counter). A plane the counter rejects leaves unused records in `provenance`.
+  explicit PieceCounter(const Mesh& solid, CornerProvenance* provenance = nullptr);
   /// Cuts every current piece `plane` crosses; returns the number of pieces added (0: no change).
   /// When a part it cuts off has a volume below `min_volume` (m^3), the plane changes nothing.
   int add(const Plane& plane, double min_volume = 0.0);
@@ -26,7 +28,7 @@ class PieceCounter {
 
  private:
   void append(SliceKernel::Piece&& piece);
-  SliceKernel kernel_{nullptr};
+  SliceKernel kernel_;
   std::vector<SliceKernel::Piece> pieces_;
   std::vector<Aabb> boxes_;  // bounding box of each piece, to skip the pieces a plane misses
 };
