@@ -73,8 +73,13 @@ class NearDraws {
 /// sphere (centre m, radius R, at distance L > R from c), the directions are drawn uniformly in the cone
 /// of that sphere (half-angle asin(R / L)) and the distances uniformly in [max(r, L - R), min(far,
 /// L + R)]: every point of the shell inside the box is in that region, and there the density is the
-/// shell's, up to a constant factor, so the points that land in the box follow the same law. Otherwise
-/// the draws are the shell's own.
+/// shell's, up to a constant factor, so the points that land in the box follow the same law. Near the
+/// box (L <= 2 R), where the cone would be most of the sphere, a point is drawn uniformly in the box
+/// and kept with probability (d_lo / d)^2 (d_lo: the least distance from c to the box, at least r), in
+/// the shell only: the kept points have the density 1 / d^2 on the box's part of the shell. That is
+/// chosen when even its least acceptance, (d_lo / D)^2, is at least the most that a draw from the
+/// whole shell can land in the box, V / (4 pi (D - r) d_lo^2) for a box of volume V; otherwise the
+/// draws are the shell's own.
 class OuterDraws {
  public:
   OuterDraws(const Vec3& c, double r, double far, const Aabb& box) : c_(c), r_(r), far_(far) {
@@ -82,8 +87,21 @@ class OuterDraws {
     // Slightly wide, so that round-off never leaves a corner of the box out of the region.
     const double R = 0.5 * (box.max - box.min).norm() * (1.0 + 1e-9) + 1e-300;
     const double L = (m - c).norm();
-    if (!(far > r) || !(L > 2.0 * R)) return;  // near or inside the sphere: the cone saves little
-    cone_ = true;
+    if (!(far > r)) return;
+    if (!(L > 2.0 * R)) {
+      // The least distance from c to the box, at least r: the densest point of the box's shell part.
+      const Vec3 gap = (box.min - c).cwiseMax(c - box.max).cwiseMax(0.0);
+      lo_ = std::max(r, gap.norm());
+      constexpr double kFourPi = 4.0 * 3.14159265358979323846;
+      const double in_box_least = (lo_ / far) * (lo_ / far);
+      const double shell_most = (box.max - box.min).prod() / (kFourPi * (far - r) * lo_ * lo_);
+      if (in_box_least >= shell_most) {
+        mode_ = Mode::box;
+        box_ = box;
+      }
+      return;
+    }
+    mode_ = Mode::cone;
     axis_ = (m - c) / L;
     const std::array<Vec3, 2> basis = perpendicular_basis(axis_);
     e1_ = basis[0];
@@ -96,11 +114,19 @@ class OuterDraws {
   }
   /// True when no point of the shell lies in the box: no draw can give a site.
   [[nodiscard]] bool empty() const { return empty_; }
-  Vec3 next(SplitMix64& rng) const {
-    if (!cone_) {
+  /// One draw; false when it was not kept (a draw all the same).
+  bool next(SplitMix64& rng, Vec3& out) const {
+    if (mode_ == Mode::box) {
+      out = rng.point_in(box_.min, box_.max);
+      const double d2 = (out - c_).squaredNorm();
+      const double keep = rng.uniform();
+      return d2 >= r_ * r_ && d2 <= far_ * far_ && keep * d2 <= lo_ * lo_;
+    }
+    if (mode_ == Mode::shell) {
       const double distance = far_ > r_ ? rng.uniform(r_, far_) : r_ * std::cbrt(rng.uniform());
       const Vec3 direction = rng.unit_vector();
-      return c_ + distance * direction;
+      out = c_ + distance * direction;
+      return true;
     }
     const double distance = rng.uniform(lo_, hi_);
     // Uniform on the cap: the height along the axis is uniform (Archimedes), the azimuth uniform.
@@ -112,7 +138,8 @@ class OuterDraws {
       n2 = x * x + y * y;
     } while (!(n2 > 1e-4 && n2 <= 1.0));
     const double ring = std::sqrt(std::max(0.0, (1.0 - z) * (1.0 + z)) / n2);
-    return c_ + distance * (z * axis_ + ring * (x * e1_ + y * e2_));
+    out = c_ + distance * (z * axis_ + ring * (x * e1_ + y * e2_));
+    return true;
   }
 
  private:
@@ -122,9 +149,11 @@ class OuterDraws {
     const Vec3 u = a.cross(helper).normalized();
     return {u, a.cross(u)};
   }
+  enum class Mode { shell, cone, box };
+  Mode mode_ = Mode::shell;
   Vec3 c_, axis_ = Vec3::UnitZ(), e1_ = Vec3::UnitX(), e2_ = Vec3::UnitY();
+  Aabb box_;
   double r_, far_, cos_max_ = 1.0, lo_ = 0.0, hi_ = 0.0;
-  bool cone_ = false;
   bool empty_ = false;
 };
 
@@ -167,7 +196,8 @@ Result<std::vector<Vec3>> sample_sites(const PointInMesh& inside, const Fracture
     for (long long d = 0; !near.empty() && sites.count() < near_wanted && d < near_budget; ++d, ++draws)
       if (near.next(rng, q)) sites.offer(q);
     const OuterDraws outer(c, r, far, box);
-    while (!outer.empty() && sites.count() < wanted && draws++ < budget) sites.offer(outer.next(rng));
+    while (!outer.empty() && sites.count() < wanted && draws++ < budget)
+      if (outer.next(rng, q)) sites.offer(q);
   }
   std::vector<Vec3> found = sites.take();
   if (found.empty()) found.push_back(0.5 * (box.min + box.max));

@@ -4,7 +4,9 @@
 // literally, as the definition says (a uniform distance in the shell, a uniform direction, rejection
 // outside the solid); the two samples are compared by two-sample Kolmogorov-Smirnov statistics on the
 // distance from the impact and on each coordinate, at the 0.1 % level (the seeds are fixed, so the
-// outcome is deterministic).
+// outcome is deterministic). Three placements exercise the three ways the shell is drawn: a piece far
+// from the impact (the cone of its box), one across the ball's boundary (its box, kept by 1 / d^2), an
+// impact inside a large solid (the whole shell).
 #include "algorithms/core/primitives.h"
 #include "algorithms/core/random.h"
 #include "algorithms/fracture/voronoi/point_in_mesh.h"
@@ -115,18 +117,35 @@ TEST_CASE("voronoi sites: around a far impact they follow the law of the whole s
 }
 
 TEST_CASE("voronoi sites: a piece the impact's ball reaches gets the law of the whole ball and shell", "[voronoi]") {
-  // A piece smaller than the ball, across its boundary: the ball is drawn in its part of the piece's box.
-  const Mesh piece = make_box(Vec3(0.5, 0.5, 0.5), Vec3(0.9, 0.1, 0.0));
+  // A piece across the ball's boundary, reaching from 0.3 to 1.33 m of the impact: the ball is drawn
+  // in its part of the piece's box, the shell in the box (its density falls by 7 times over the piece).
+  const Mesh piece = make_box(Vec3(1.0, 0.4, 0.4), Vec3(0.8, 0.0, 0.0));
   const PointInMesh inside(piece);
   Impact impact;
   impact.point = Vec3(0.0, 0.0, 0.0);
   impact.direction = Vec3(1.0, 0.0, 0.0);
-  impact.radius = 1.0;
+  impact.radius = 0.5;
   // One call: half the sites in the ball (impact_share 0.5), the rest from the shell.
   const std::vector<Vec3> sampled = sampled_sites(inside, impact, 2000, 2000);
   std::vector<Vec3> ball(sampled.begin(), sampled.begin() + 1000), shell(sampled.begin() + 1000, sampled.end());
   for (const Vec3& p : ball) CHECK((p - impact.point).norm() <= impact.radius);
   const std::vector<Vec3> reference = reference_sites(inside, impact.point, impact.radius, 1000, 2000, 7);
+  check_same_law(ball, std::vector<Vec3>(reference.begin(), reference.begin() + 1000), impact.point);
+  check_same_law(shell, std::vector<Vec3>(reference.begin() + 1000, reference.end()), impact.point);
+}
+
+TEST_CASE("voronoi sites: an impact inside a large solid gets the law of the whole ball and shell", "[voronoi]") {
+  // The ball inside the solid and the shell filling it: both drawn whole, as the definition does.
+  const Mesh solid = make_box(Vec3(4.0, 3.0, 2.0), Vec3(0.5, 0.0, 0.0));
+  const PointInMesh inside(solid);
+  Impact impact;
+  impact.point = Vec3(0.2, -0.3, 0.1);
+  impact.radius = 0.3;
+  const std::vector<Vec3> sampled = sampled_sites(inside, impact, 2000, 2000);
+  std::vector<Vec3> ball(sampled.begin(), sampled.begin() + 1000), shell(sampled.begin() + 1000, sampled.end());
+  for (const Vec3& p : ball) CHECK((p - impact.point).norm() <= impact.radius);
+  for (const Vec3& p : shell) CHECK((p - impact.point).norm() >= impact.radius);
+  const std::vector<Vec3> reference = reference_sites(inside, impact.point, impact.radius, 1000, 2000, 5);
   check_same_law(ball, std::vector<Vec3>(reference.begin(), reference.begin() + 1000), impact.point);
   check_same_law(shell, std::vector<Vec3>(reference.begin() + 1000, reference.end()), impact.point);
 }
