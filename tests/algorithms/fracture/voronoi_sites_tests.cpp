@@ -96,6 +96,24 @@ void check_same_law(const std::vector<Vec3>& a, const std::vector<Vec3>& b, cons
   }
 }
 
+/// One call of 2000 sites around `impact` in `solid` (half in the ball, impact_share 0.5, the rest from
+/// the shell) against the definition's 2000, the ball's and the shell's sites compared apart.
+void check_ball_and_shell(const Mesh& solid, const Vec3& point, double radius, std::uint64_t reference_seed) {
+  const PointInMesh inside(solid);
+  Impact impact;
+  impact.point = point;
+  impact.radius = radius;
+  const std::vector<Vec3> sampled = sampled_sites(inside, impact, 2000, 2000);
+  const std::vector<Vec3> reference = reference_sites(inside, point, radius, 1000, 2000, reference_seed);
+  const auto half = [](const std::vector<Vec3>& v, bool first) {
+    return first ? std::vector<Vec3>(v.begin(), v.begin() + 1000) : std::vector<Vec3>(v.begin() + 1000, v.end());
+  };
+  for (const Vec3& p : half(sampled, true)) CHECK((p - point).norm() <= radius);
+  for (const Vec3& p : half(sampled, false)) CHECK((p - point).norm() >= radius);
+  check_same_law(half(sampled, true), half(reference, true), point);
+  check_same_law(half(sampled, false), half(reference, false), point);
+}
+
 }  // namespace
 
 TEST_CASE("voronoi sites: around a far impact they follow the law of the whole shell", "[voronoi]") {
@@ -119,33 +137,10 @@ TEST_CASE("voronoi sites: around a far impact they follow the law of the whole s
 TEST_CASE("voronoi sites: a piece the impact's ball reaches gets the law of the whole ball and shell", "[voronoi]") {
   // A piece across the ball's boundary, reaching from 0.3 to 1.33 m of the impact: the ball is drawn
   // in its part of the piece's box, the shell in the box (its density falls by 7 times over the piece).
-  const Mesh piece = make_box(Vec3(1.0, 0.4, 0.4), Vec3(0.8, 0.0, 0.0));
-  const PointInMesh inside(piece);
-  Impact impact;
-  impact.point = Vec3(0.0, 0.0, 0.0);
-  impact.direction = Vec3(1.0, 0.0, 0.0);
-  impact.radius = 0.5;
-  // One call: half the sites in the ball (impact_share 0.5), the rest from the shell.
-  const std::vector<Vec3> sampled = sampled_sites(inside, impact, 2000, 2000);
-  std::vector<Vec3> ball(sampled.begin(), sampled.begin() + 1000), shell(sampled.begin() + 1000, sampled.end());
-  for (const Vec3& p : ball) CHECK((p - impact.point).norm() <= impact.radius);
-  const std::vector<Vec3> reference = reference_sites(inside, impact.point, impact.radius, 1000, 2000, 7);
-  check_same_law(ball, std::vector<Vec3>(reference.begin(), reference.begin() + 1000), impact.point);
-  check_same_law(shell, std::vector<Vec3>(reference.begin() + 1000, reference.end()), impact.point);
+  check_ball_and_shell(make_box(Vec3(1.0, 0.4, 0.4), Vec3(0.8, 0.0, 0.0)), Vec3(0.0, 0.0, 0.0), 0.5, 7);
 }
 
 TEST_CASE("voronoi sites: an impact inside a large solid gets the law of the whole ball and shell", "[voronoi]") {
   // The ball inside the solid and the shell filling it: both drawn whole, as the definition does.
-  const Mesh solid = make_box(Vec3(4.0, 3.0, 2.0), Vec3(0.5, 0.0, 0.0));
-  const PointInMesh inside(solid);
-  Impact impact;
-  impact.point = Vec3(0.2, -0.3, 0.1);
-  impact.radius = 0.3;
-  const std::vector<Vec3> sampled = sampled_sites(inside, impact, 2000, 2000);
-  std::vector<Vec3> ball(sampled.begin(), sampled.begin() + 1000), shell(sampled.begin() + 1000, sampled.end());
-  for (const Vec3& p : ball) CHECK((p - impact.point).norm() <= impact.radius);
-  for (const Vec3& p : shell) CHECK((p - impact.point).norm() >= impact.radius);
-  const std::vector<Vec3> reference = reference_sites(inside, impact.point, impact.radius, 1000, 2000, 5);
-  check_same_law(ball, std::vector<Vec3>(reference.begin(), reference.begin() + 1000), impact.point);
-  check_same_law(shell, std::vector<Vec3>(reference.begin() + 1000, reference.end()), impact.point);
+  check_ball_and_shell(make_box(Vec3(4.0, 3.0, 2.0), Vec3(0.5, 0.0, 0.0)), Vec3(0.2, -0.3, 0.1), 0.3, 5);
 }
