@@ -27,7 +27,9 @@ struct SiteSettings {
 /// in the part of the ball B(c, r) inside the solid, and the rest at distance d from c uniform in
 /// [r, D] (D: farthest corner of the bounding box) in a uniform direction, which is a density falling
 /// as 1 / d^2: fragments are small near the impact and grow with the distance from it. Sites the ball
-/// cannot hold (it barely meets the solid) fall back to the outer distribution.
+/// cannot hold (it barely meets the solid) fall back to the outer distribution. Each distribution is
+/// drawn only where it can reach the solid's bounding box (the same law restricted to a region that
+/// holds the solid), so a small solid far from the impact, a runtime piece, wastes few draws.
 /// A solid so thin that the draws run out (a sliver fragment fractured again at runtime) gets the sites
 /// found so far: fewer fragments than requested, which the fragment count of the metrics shows, rather
 /// than a failed frame. With none found, one site at the box centre: one cell, the whole solid.
