@@ -53,7 +53,13 @@ void append_planar_corners(MeshAttributes& attr, const Vec3& normal, const std::
 }  // namespace
 
 PlanarDressing::PlanarDressing(const AttributeLayout& layout, const Vec3& normal, double scale)
-    : scale_(scale), stride_(layout.stride()), uv_offset_(layout.uv_offset(0)), uv_sets_(layout.uv_sets) {
+    : scale_(scale),
+      stride_(layout.stride()),
+      uv_offset_(layout.uv_offset(0)),
+      uv_sets_(layout.uv_sets),
+      tangent_offset_(layout.tangent_offset()),
+      normals_(layout.normals),
+      tangents_(layout.tangents) {
   const PlanarFrame& frame = planar_frame(normal);
   e1_ = frame.e[0];
   e2_ = frame.e[1];
@@ -66,15 +72,23 @@ PlanarDressing::PlanarDressing(const AttributeLayout& layout, const Vec3& normal
 }
 
 void PlanarDressing::write(const Vec3& a, const Vec3& b, const Vec3& c, double* out) const {
+  // Channel by channel, the fixed values held in locals (which `out` cannot alias, so they are plain
+  // stores rather than a copy call per corner): each value written once.
+  const std::array<double, 3> normal{fixed_[0], fixed_[1], fixed_[2]};
+  const double* t = fixed_.data() + tangent_offset_;
+  const std::array<double, 4> tangent{t[0], t[1], t[2], t[3]};
   const auto stride = static_cast<std::size_t>(stride_);
   for (const Vec3* q : {&a, &b, &c}) {
-    std::copy_n(fixed_.data(), stride, out);
+    if (normals_)
+      for (int i = 0; i < 3; ++i) out[AttributeLayout::normal_offset() + i] = normal[static_cast<std::size_t>(i)];
     const double u = q->dot(e1_) / scale_;
     const double v = q->dot(e2_) / scale_;
     for (int set = 0; set < uv_sets_; ++set) {
       out[uv_offset_ + 2 * set] = u;
       out[uv_offset_ + 2 * set + 1] = v;
     }
+    if (tangents_)
+      for (int i = 0; i < 4; ++i) out[tangent_offset_ + i] = tangent[static_cast<std::size_t>(i)];
     out += stride;
   }
 }

@@ -80,13 +80,16 @@ class PlanarDressing {
   void write(const Vec3& a, const Vec3& b, const Vec3& c, double* out) const;
 
  private:
-  std::array<double, kMaxCornerValues> fixed_{};  // one corner's values with its UVs left zero
+  std::array<double, kMaxCornerValues> fixed_{};  // one corner's normal and tangent at their offsets
   Vec3 e1_ = Vec3::UnitX();                 // the plane's basis (cut_plane_basis)
   Vec3 e2_ = Vec3::UnitY();
   double scale_ = 1.0;
   int stride_ = 0;
   int uv_offset_ = 0;
   int uv_sets_ = 0;
+  int tangent_offset_ = 0;
+  bool normals_ = false;
+  bool tangents_ = false;
 };
 
 /// The dressing add_cut_triangle gives cut faces of `attr` with `outward_normal` (any non-zero length):

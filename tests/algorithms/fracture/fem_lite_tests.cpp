@@ -164,22 +164,28 @@ TEST_CASE("fem-lite: the crack search's pieces are bit for bit the fragments of 
   std::vector<Mesh> solids = {make_beam(), make_sphere(1.0, 24, 12), make_torus(1.0, 0.3, 24, 12)};
   if (auto elephant = test::load_fixture_mesh("elephant.off")) solids.push_back(std::move(*elephant));
   REQUIRE(solids.size() == 4);
-  for (const Mesh& plain : solids) {
+  for (std::size_t s = 0; s < solids.size(); ++s) {
+    const Mesh& plain = solids[s];
+    // The elephant (5,558 triangles) into one count: the solves are most of this test's time.
+    const std::vector<int> counts = s == 3 ? std::vector<int>{9} : std::vector<int>{2, 9, 30};
     Mesh dressed = plain;
     MaterialSlot stone;
     stone.name = "stone";
     apply_box_mapping(dressed, default_cut_uv_scale(dressed) / 10.0, stone);
     prepare_cut_faces(dressed);
     REQUIRE(has_attributes(dressed));
-    for (const Mesh* solid : {&plain, static_cast<const Mesh*>(&dressed)}) {
-      const Aabb box = bounding_box(*solid);
-      const Vec3 top((box.min.x() + box.max.x()) / 2, (box.min.y() + box.max.y()) / 2, box.max.z());
-      for (const int n : {2, 9, 30}) {
-        const FractureParams params = downward_hit(top, n, 0.2 * box.diagonal());
-        const FemLiteFracturer fem;
-        auto planes = fem.crack_planes(*solid, params);
+    const Aabb box = bounding_box(plain);
+    const Vec3 top((box.min.x() + box.max.x()) / 2, (box.min.y() + box.max.y()) / 2, box.max.z());
+    for (const int n : counts) {
+      const FractureParams params = downward_hit(top, n, 0.2 * box.diagonal());
+      const FemLiteFracturer fem;
+      // The planes are found on positions alone, so the plain solid's are the dressed one's too: the
+      // dressed fracture equal to the cut by them shows its search found them as well.
+      auto planes = fem.crack_planes(plain, params);
+      REQUIRE(planes.ok());
+      for (const Mesh* solid : {&plain, static_cast<const Mesh*>(&dressed)}) {
         auto fragments = fem.fracture(*solid, params);
-        REQUIRE((planes.ok() && fragments.ok()));
+        REQUIRE(fragments.ok());
         auto replayed = PlaneSliceFracturer().fracture_by_planes(*solid, *planes);
         REQUIRE(replayed.ok());
         REQUIRE(fragments->size() == replayed->size());
