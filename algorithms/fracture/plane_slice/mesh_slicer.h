@@ -25,6 +25,8 @@
 #include "algorithms/fracture/plane_slice/cap_closure.h"
 #include "algorithms/core/cap_triangulator.h"
 
+#include <absl/container/flat_hash_map.h>
+
 #include <array>
 #include <cstdint>
 #include <string>
@@ -90,10 +92,13 @@ class MeshSlicer {
   std::vector<CrossingEnds> crossing_ends_;             // per crossing ref - V
   bool attributed_ = false;                             // the sliced mesh carries attributes
   CornerProvenance* provenance_ = nullptr;              // set when the mesh is a tracked piece
-  std::unordered_map<std::uint64_t, std::int32_t> crossing_of_edge_;  // undirected edge -> ref
+  // Lookups only: open addressing (no node allocated per entry).
+  absl::flat_hash_map<std::uint64_t, std::int32_t> crossing_of_edge_;  // undirected edge -> ref
+  // Iterated, and its order numbers the cap's points: a std::unordered_map, whose order is the same
+  // on every run (absl's hash is seeded per process).
   std::unordered_map<std::uint64_t, int> outline_;      // lower half's in-plane half-edges, net count
   std::vector<std::int32_t> cap_ref_;                   // cap point -> ref
-  std::unordered_map<std::int32_t, std::int32_t> cap_point_of_ref_;
+  absl::flat_hash_map<std::int32_t, std::int32_t> cap_point_of_ref_;  // lookups only
   std::vector<Vec2> cap_points_;
   std::vector<CapEdge> cap_edges_;
   std::vector<std::int32_t> cap_order_;                 // cap points sorted by position
