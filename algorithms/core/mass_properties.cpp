@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 
+#include <array>
 #include <cassert>
 
 namespace shatter {
@@ -30,8 +31,12 @@ MassProperties mass_properties(const Mesh& mesh) {
   assert(mesh.tags.size() == mesh.triangles.size());
   const Vec3 origin = reference_point(mesh);
   double six_volume = 0.0;
-  Vec3 moment24 = Vec3::Zero();                     // 24 * first moment
-  Eigen::Matrix3d second120 = Eigen::Matrix3d::Zero();  // 120 * second moment
+  Vec3 moment24 = Vec3::Zero();  // 24 * first moment
+  // 120 * second moment, symmetric: its six distinct entries (xx, yy, zz, xy, xz, yz). Entry (i, j)
+  // takes the same products in the same order as (j, i) (a_i a_j = a_j a_i exactly), so summing one
+  // of each pair gives the full matrix's values bit for bit at 6 of its 9 entries' cost.
+  std::array<double, 6> second120{};
+  static constexpr std::array<std::array<int, 2>, 6> kEntries{{{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}}};
   for (const Triangle& t : mesh.triangles) {
     const Vec3 a = mesh.vertices[t[0]] - origin;
     const Vec3 b = mesh.vertices[t[1]] - origin;
@@ -40,7 +45,11 @@ MassProperties mass_properties(const Mesh& mesh) {
     const Vec3 s = a + b + c;
     six_volume += d;
     moment24 += d * s;
-    second120 += d * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+    for (std::size_t k = 0; k < kEntries.size(); ++k) {
+      const int i = kEntries[k][0];
+      const int j = kEntries[k][1];
+      second120[k] += d * (a[i] * a[j] + b[i] * b[j] + c[i] * c[j] + s[i] * s[j]);
+    }
   }
   MassProperties result;
   result.volume = six_volume / 6.0;
@@ -48,7 +57,10 @@ MassProperties mass_properties(const Mesh& mesh) {
   const Vec3 centre = moment24 / (4.0 * six_volume);  // (moment24 / 24) / (six_volume / 6)
   result.centroid = origin + centre;
   // Parallel-axis shift of the second moment to the centroid, then I = tr(C) Id - C.
-  const Eigen::Matrix3d covariance = second120 / 120.0 - result.volume * centre * centre.transpose();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (std::size_t k = 0; k < kEntries.size(); ++k)
+    second(kEntries[k][0], kEntries[k][1]) = second(kEntries[k][1], kEntries[k][0]) = second120[k];
+  const Eigen::Matrix3d covariance = second / 120.0 - result.volume * centre * centre.transpose();
   result.inertia = covariance.trace() * Eigen::Matrix3d::Identity() - covariance;
   result.inertia = 0.5 * (result.inertia + result.inertia.transpose()).eval();
   return result;

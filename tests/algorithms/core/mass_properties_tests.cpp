@@ -156,3 +156,42 @@ TEST_CASE("mass: an empty mesh has zero volume and no NaN", "[mass]") {
   CHECK(mp.centroid.allFinite());
   CHECK(mp.inertia.allFinite());
 }
+
+TEST_CASE("mass: the symmetric second moment summed once per pair of entries is the full sum bit for bit",
+          "[mass]") {
+  // The full 3 x 3 sum of outer products, written out as the definition, against mass_properties's
+  // six entries: the same products in the same order, so the inertia must be equal, not just close.
+  const auto full = [](const Mesh& mesh) {
+    Aabb box = bounding_box(mesh);
+    const Vec3 origin = 0.5 * (box.min + box.max);
+    double six_volume = 0.0;
+    Vec3 moment24 = Vec3::Zero();
+    Eigen::Matrix3d second120 = Eigen::Matrix3d::Zero();
+    for (const Triangle& t : mesh.triangles) {
+      const Vec3 a = mesh.vertices[t[0]] - origin;
+      const Vec3 b = mesh.vertices[t[1]] - origin;
+      const Vec3 c = mesh.vertices[t[2]] - origin;
+      const double d = a.dot(b.cross(c));
+      const Vec3 s = a + b + c;
+      six_volume += d;
+      moment24 += d * s;
+      second120 += d * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+    }
+    const double volume = six_volume / 6.0;
+    const Vec3 centre = moment24 / (4.0 * six_volume);
+    const Eigen::Matrix3d covariance = second120 / 120.0 - volume * centre * centre.transpose();
+    Eigen::Matrix3d inertia = covariance.trace() * Eigen::Matrix3d::Identity() - covariance;
+    return Eigen::Matrix3d(0.5 * (inertia + inertia.transpose()));
+  };
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  std::vector<Mesh> meshes = {make_torus(1.0, 0.3, 24, 12), make_sphere(0.8, 16, 8), make_box(Vec3(2, 3, 5))};
+  Mesh turned = make_box(Vec3(0.4, 0.2, 0.1), Vec3(3.0, -2.0, 7.0));
+  for (Vec3& v : turned.vertices) v = turn * v;
+  meshes.push_back(std::move(turned));
+  for (const Mesh& mesh : meshes) {
+    const Eigen::Matrix3d expected = full(mesh);
+    const Eigen::Matrix3d got = mass_properties(mesh).inertia;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) CHECK(got(i, j) == expected(i, j));
+  }
+}
