@@ -26,18 +26,29 @@ class DisjointSets {
     if (a != b) parent_[std::max(a, b)] = std::min(a, b);
   }
 
+  /// Number of sets (each vertex is in one; an unused vertex is a set of its own).
+  [[nodiscard]] std::size_t count() const {
+    std::size_t roots = 0;
+    for (std::size_t v = 0; v < parent_.size(); ++v) roots += parent_[v] == static_cast<std::int32_t>(v);
+    return roots;
+  }
  private:
   std::vector<std::int32_t> parent_;
 };
 
-/// Labels every vertex with its part (0..parts-1, numbered by first triangle) and returns the count;
-/// unused vertices get -1.
-int label_parts(const Mesh& mesh, std::vector<std::int32_t>& vertex_part) {
+/// The vertices of each triangle joined: the sets are the mesh's parts (and its unused vertices).
+DisjointSets vertex_sets(const Mesh& mesh) {
   DisjointSets sets(mesh.vertices.size());
   for (const Triangle& t : mesh.triangles) {
     sets.unite(t[0], t[1]);
     sets.unite(t[0], t[2]);
   }
+  return sets;
+}
+
+/// Labels every vertex with its part (0..parts-1, numbered by first triangle) and returns the count;
+/// unused vertices get -1.
+int label_parts(const Mesh& mesh, DisjointSets& sets, std::vector<std::int32_t>& vertex_part) {
   std::vector<std::int32_t> root_part(mesh.vertices.size(), -1);
   vertex_part.assign(mesh.vertices.size(), -1);
   int parts = 0;
@@ -70,28 +81,26 @@ std::vector<Mesh> split_parts(const Mesh& mesh, const std::vector<std::int32_t>&
   return out;
 }
 
-bool all_vertices_used(const std::vector<std::int32_t>& vertex_part) {
-  for (std::int32_t p : vertex_part)
-    if (p < 0) return false;
-  return true;
-}
-
 }  // namespace
 
 std::vector<Mesh> connected_components(const Mesh& mesh) {
+  DisjointSets sets = vertex_sets(mesh);
   std::vector<std::int32_t> vertex_part;
-  const int parts = label_parts(mesh, vertex_part);
+  const int parts = label_parts(mesh, sets, vertex_part);
   return split_parts(mesh, vertex_part, parts);
 }
 
 std::vector<Mesh> connected_components(Mesh&& mesh) {
-  std::vector<std::int32_t> vertex_part;
-  const int parts = label_parts(mesh, vertex_part);
-  if (parts == 1 && all_vertices_used(vertex_part)) {
+  DisjointSets sets = vertex_sets(mesh);
+  // One set with a triangle: one part that uses every vertex (an unused vertex would be a set of its
+  // own), the mesh as it is; no labels needed.
+  if (!mesh.triangles.empty() && sets.count() == 1) {
     std::vector<Mesh> out;
     out.push_back(std::move(mesh));
     return out;
   }
+  std::vector<std::int32_t> vertex_part;
+  const int parts = label_parts(mesh, sets, vertex_part);
   return split_parts(mesh, vertex_part, parts);
 }
 
