@@ -26,7 +26,7 @@ std::vector<std::array<Vec3, 3>> corner_positions(const Mesh& mesh) {
 
 }  // namespace
 
-TEST_CASE("components: one box is one part, moved out whole; an unused vertex is dropped", "[components]") {
+TEST_CASE("components: one box is one part, moved out whole, and without a vertex no triangle uses", "[components]") {
   const Mesh box = make_box(Vec3(1, 2, 3));
   Mesh moved = box;
   const std::vector<Mesh> one = connected_components(std::move(moved));
