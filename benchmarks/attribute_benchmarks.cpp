@@ -18,6 +18,7 @@
 #include "harness/cases/load_solid.h"
 #include "harness/metrics/attribute_metrics.h"
 #include "benchmarks/benchmark_families.h"
+#include "benchmarks/benchmark_fracturer.h"
 
 #include <benchmark/benchmark.h>
 
@@ -49,19 +50,14 @@ Mesh dressed(const Solid& solid) {
 
 void fracture_pair(benchmark::State& state, const Registries& registries, const Mesh& mesh,
                    const std::string& algorithm, int n) {
-  auto fracturer = registries.fracturers.create(algorithm);
-  if (!fracturer) {
-    state.SkipWithError(fracturer.error().message.c_str());
-    return;
-  }
-  FractureParams params;
-  params.fragments = n;
-  params.seed = 1;
+  const std::unique_ptr<Fracturer> fracturer = fracturer_or_skip(state, registries, algorithm);
+  if (!fracturer) return;
+  FractureParams params = benchmark_fracture_params(n);
   SelfIntersectionVerdicts verdicts;  // the input check once, as in a game's repeated fractures
   params.verdicts = &verdicts;
   std::vector<Fragment> fragments;
   for (auto _ : state) {
-    auto out = (*fracturer)->fracture(mesh, params);
+    auto out = fracturer->fracture(mesh, params);
     if (!out) {
       state.SkipWithError(out.error().message.c_str());
       return;
@@ -99,15 +95,9 @@ void output_floor(benchmark::State& state, const Mesh& mesh) {
 /// carry their attributes as mesh_attributes.h lays them out.
 void fragment_output_floor(benchmark::State& state, const Registries& registries, const Mesh& mesh,
                            const std::string& algorithm, int n) {
-  auto fracturer = registries.fracturers.create(algorithm);
-  if (!fracturer) {
-    state.SkipWithError(fracturer.error().message.c_str());
-    return;
-  }
-  FractureParams params;
-  params.fragments = n;
-  params.seed = 1;
-  auto made = (*fracturer)->fracture(mesh, params);
+  const std::unique_ptr<Fracturer> fracturer = fracturer_or_skip(state, registries, algorithm);
+  if (!fracturer) return;
+  auto made = fracturer->fracture(mesh, benchmark_fracture_params(n));
   if (!made) {
     state.SkipWithError(made.error().message.c_str());
     return;

@@ -19,6 +19,7 @@
 #include "harness/cases/load_solid.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "benchmarks/benchmark_families.h"
+#include "benchmarks/benchmark_fracturer.h"
 
 #include <benchmark/benchmark.h>
 
@@ -84,20 +85,15 @@ enum class Visit { again, first };
 
 void fracture_into(benchmark::State& state, const Registries& registries, const Solid& solid,
                    const std::string& algorithm, int n, Visit visit = Visit::again) {
-  auto fracturer = registries.fracturers.create(algorithm);
-  if (!fracturer) {
-    state.SkipWithError(fracturer.error().message.c_str());
-    return;
-  }
-  FractureParams params;
-  params.fragments = n;
-  params.seed = 1;
+  const std::unique_ptr<Fracturer> fracturer = fracturer_or_skip(state, registries, algorithm);
+  if (!fracturer) return;
+  FractureParams params = benchmark_fracture_params(n);
   std::vector<Fragment> fragments;
   std::unique_ptr<SelfIntersectionVerdicts> verdicts = std::make_unique<SelfIntersectionVerdicts>();
   for (auto _ : state) {
     if (visit == Visit::first) verdicts = std::make_unique<SelfIntersectionVerdicts>();
     params.verdicts = verdicts.get();
-    auto out = (*fracturer)->fracture(solid.mesh, params);
+    auto out = fracturer->fracture(solid.mesh, params);
     if (!out) {
       state.SkipWithError(out.error().message.c_str());
       return;
