@@ -32,6 +32,7 @@ class DisjointSets {
     for (std::size_t v = 0; v < parent_.size(); ++v) roots += parent_[v] == static_cast<std::int32_t>(v);
     return roots;
   }
+
  private:
   std::vector<std::int32_t> parent_;
 };
