@@ -48,8 +48,8 @@ Mesh dressed(const Solid& solid) {
   return mesh;
 }
 
-[[gnu::noinline]] void fracture_pair(benchmark::State& state, const Registries& registries, const Mesh& mesh,
-                                    const std::string& algorithm, int n) {
+void fracture_pair(benchmark::State& state, const Registries& registries, const Mesh& mesh,
+                   const std::string& algorithm, int n) {
   const std::unique_ptr<Fracturer> fracturer = fracturer_or_skip(state, registries, algorithm);
   if (!fracturer) return;
   FractureParams params = benchmark_fracture_params(n);
