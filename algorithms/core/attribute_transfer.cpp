@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace shatter {
@@ -325,15 +326,43 @@ Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValue
   return {};
 }
 
-bool all_finite(const double* values, std::size_t count) {
-  // v - v is 0 for a finite v and NaN for an infinite or NaN one, summed in 8 independent lanes (no
-  // reassociation needed, so the compiler vectorises them); the first offender is sought only on failure.
+namespace {
+
+/// True when `factor` v is finite for each of the `count` values v at `values`: factor v - factor v is 0
+/// for a finite product and NaN otherwise, summed in 8 independent lanes (no reassociation needed, so
+/// the compiler vectorises them).
+bool all_finite_scaled(const double* values, std::size_t count, double factor) {
   std::array<double, 8> lanes{};
   std::size_t i = 0;
   for (; i + 8 <= count; i += 8)
-    for (std::size_t k = 0; k < 8; ++k) lanes[k] += values[i + k] - values[i + k];
-  for (; i < count; ++i) lanes[0] += values[i] - values[i];
+    for (std::size_t k = 0; k < 8; ++k) {
+      const double w = factor * values[i + k];
+      lanes[k] += w - w;
+    }
+  for (; i < count; ++i) {
+    const double w = factor * values[i];
+    lanes[0] += w - w;
+  }
   return std::all_of(lanes.begin(), lanes.end(), [](double lane) { return lane == 0.0; });
+}
+
+}  // namespace
+
+bool all_finite(const double* values, std::size_t count) {
+  // The first offender is sought only on failure (check_attributes).
+  return all_finite_scaled(values, count, 1.0);
+}
+
+bool fracture_attributes_bounded(const Mesh& solid) {
+  constexpr double largest = std::numeric_limits<double>::max();
+  // 4 v is exact unless it overflows, which it does exactly when |v| > largest / 4 (or v is not finite).
+  const MeshAttributes& attr = solid.attributes;
+  if (!all_finite_scaled(attr.corners.data(), attr.corners.size(), 4.0)) return false;
+  if (attr.layout.empty()) return true;
+  const double scale = attr.cut.uv_scale > 0.0 ? attr.cut.uv_scale : 1.0;  // as cut_face_dressing takes it
+  double reach = 0.0;
+  for (const Vec3& v : solid.vertices) reach = std::max(reach, v.cwiseAbs().maxCoeff());
+  return std::isfinite(reach) && reach / scale <= largest / 16.0;
 }
 
 }  // namespace shatter

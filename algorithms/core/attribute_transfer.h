@@ -150,4 +150,21 @@ Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValue
 /// True when each of the `count` values at `values` is finite (one branch-free pass).
 [[nodiscard]] bool all_finite(const double* values, std::size_t count);
 
+/// True when every corner value a fracture of `solid` can make is finite, decided from two bounds on
+/// the solid alone (one pass over its values, one over its positions), so that the fracture need not
+/// look at its output: its values are each within a quarter of the largest double, and its largest
+/// coordinate over its cut-face UV scale within a sixteenth. A fracture's values are the solid's
+/// values copied, weighted sums of one solid face's three values whose weights are convex
+/// combinations made by lerps at parameters in [0, 1] (so at most about the largest value in
+/// magnitude), and cut-face values: unit normals and tangents, and UVs that are a position's dot
+/// product with a unit vector over the scale, every position lying in the solid's bounding box
+/// (|u| <= 3 (1 + eps) max|coordinate| / scale). False for a value that is not finite.
+[[nodiscard]] bool fracture_attributes_bounded(const Mesh& solid);
+
+/// Why a fracture refuses when its output has a corner value that is not finite although the solid's
+/// values are finite: a weighted sum of values near the largest double, or a cut face's UV of a
+/// position far out against a tiny UV scale.
+inline constexpr const char* kAttributeOverflow =
+    "a corner attribute overflows (the input's values, or its size against the cut-face UV scale, are too large)";
+
 }  // namespace shatter

@@ -7,7 +7,10 @@
 namespace shatter {
 
 CornerProvenance::CornerProvenance(const Mesh& solid, std::string who)
-    : solid_(solid), who_(std::move(who)), solid_faces_(static_cast<std::int32_t>(solid.triangles.size())) {}
+    : solid_(solid),
+      who_(std::move(who)),
+      solid_faces_(static_cast<std::int32_t>(solid.triangles.size())),
+      outputs_bounded_(fracture_attributes_bounded(solid)) {}
 
 Mesh CornerProvenance::tracked() const {
   Mesh piece;
@@ -127,12 +130,13 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
     corners.insert(corners.end(), buffer.data(), buffer.data() + face_values);
     ++f;
   }
-  // One pass over the piece's values while they are still in cache (a piece is a part of the solid).
-  if (!all_finite(corners.data(), corners.size())) {
-    // The offending solid triangle, found only now; a weighted sum can overflow only when the solid's
-    // values reach the largest doubles.
+  // Unless the solid's bounds rule out a value that is not finite (fracture_attributes_bounded), one
+  // pass over the piece's values while they are still in cache.
+  if (!outputs_bounded_ && !all_finite(corners.data(), corners.size())) {
+    // The offending solid triangle, found only now; otherwise a weighted sum of values near the largest
+    // doubles, or a cut face's UV of a position far out against a tiny UV scale, overflowed.
     if (Status s = check_attributes(solid_, who_); !s) return s.error();
-    return Error{who_ + ": an interpolated corner attribute overflows (the input's values are too large)"};
+    return Error{who_ + ": " + kAttributeOverflow};
   }
   out.vertices = std::move(piece.vertices);
   out.triangles = std::move(piece.triangles);

@@ -45,8 +45,8 @@ class CornerProvenance {
   /// length): one call per side of a cut, shared by all its cap faces.
   std::int32_t cap(const Vec3& outward_normal);
 
-  /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated. Each value
-  /// is checked as it is written (the solid's values are read here, so a fracture that tracks them
+  /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated. No value
+  /// that is not finite is returned (the solid's values are read here, so a fracture that tracks them
   /// need not check them first: check_attributes' AttributeValues::at_use); an Error names the first
   /// solid triangle with a value that is not finite.
   [[nodiscard]] Result<Mesh> resolve(Mesh&& piece) const;
@@ -63,6 +63,9 @@ class CornerProvenance {
   const Mesh& solid_;
   std::string who_;  // names the fracture in resolve's error
   std::int32_t solid_faces_;
+  // True when every value resolve can write is finite, decided from the solid alone
+  // (fracture_attributes_bounded); otherwise resolve checks what it writes.
+  bool outputs_bounded_;
   std::vector<Cut> cuts_;          // record solid_faces_ + i
   std::vector<PlanarDressing> cap_dressings_;  // record -(i + 1): its cut-face dressing
 };

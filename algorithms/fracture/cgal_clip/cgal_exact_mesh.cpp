@@ -287,6 +287,11 @@ Fragment to_fragment(Piece& piece, const Mesh& solid) {
                           {weights(CGAL::exact(pa)), weights(CGAL::exact(pb)), weights(CGAL::exact(pc))});
     out.tags.back() = tag;  // as without attributes: "is_cut" decides (a repair face comes out surface)
   }
+  // The solid's values were checked; a weighted sum of values near the largest doubles, or a cut
+  // face's UV of a position far out against a tiny UV scale, can still overflow (the reference
+  // checks its output whatever fracture_attributes_bounded says).
+  if (attributed && !all_finite(out.attributes.corners.data(), out.attributes.corners.size()))
+    throw ClipFailure(kAttributeOverflow);
   fragment.mass = mass_properties(out);
   return fragment;
 }

@@ -232,6 +232,16 @@ Status check_settings(const VoronoiSettings& s) {
   return {};
 }
 
+/// `fragments`, or the error of a corner value that overflowed (fracture_attributes_bounded says when
+/// none can, and then the output is not read).
+Result<std::vector<Fragment>> with_finite_corners(std::vector<Fragment>&& fragments, const Mesh& solid) {
+  if (!has_attributes(solid) || fracture_attributes_bounded(solid)) return std::move(fragments);
+  for (const Fragment& f : fragments)
+    if (!all_finite(f.mesh.attributes.corners.data(), f.mesh.attributes.corners.size()))
+      return Error{std::string("voronoi: ") + kAttributeOverflow};
+  return std::move(fragments);
+}
+
 }  // namespace
 
 Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, const FractureParams& params) const {
@@ -241,7 +251,7 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture(const Mesh& solid, cons
   Result<std::vector<Vec3>> sites = sample_sites(inside, params, settings_.sites);
   if (!sites) return sites.error();
   if (Status s = check_sites(*sites); !s) return s.error();
-  return cut_cells(solid, *sites, &inside);
+  return with_finite_corners(cut_cells(solid, *sites, &inside), solid);
 }
 
 Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& solid,
@@ -249,7 +259,7 @@ Result<std::vector<Fragment>> VoronoiFracturer::fracture_with_sites(const Mesh& 
   if (Status s = check_fracture_solid(solid, "voronoi", nullptr); !s) return s.error();
   if (Status s = check_sites(sites); !s) return s.error();
   if (Status s = check_settings(settings_); !s) return s.error();
-  return cut_cells(solid, sites, nullptr);
+  return with_finite_corners(cut_cells(solid, sites, nullptr), solid);
 }
 
 std::vector<Fragment> VoronoiFracturer::cut_cells(const Mesh& solid, std::span<const Vec3> sites,

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 
 using namespace shatter;
 
@@ -191,6 +192,28 @@ TEST_CASE("attributes: inconsistent attributes are refused with the triangle nam
   prepare_cut_faces(plain);
   CHECK(plain.attributes.empty());
   CHECK(check_attributes(plain, "plain").ok());
+}
+
+TEST_CASE("attributes: a fracture's values are bounded by the solid's when its values and size against the UV scale are",
+          "[attributes]") {
+  const Mesh good = test::with_affine_attributes(make_box(Vec3(1, 1, 1)));
+  CHECK(fracture_attributes_bounded(good));
+  constexpr double largest = std::numeric_limits<double>::max();
+  Mesh m = good;
+  m.attributes.corners[4] = -largest / 4.0;  // at the bound
+  CHECK(fracture_attributes_bounded(m));
+  m.attributes.corners[4] = std::nextafter(-largest / 4.0, -largest);
+  CHECK_FALSE(fracture_attributes_bounded(m));
+  m.attributes.corners[4] = std::nan("");
+  CHECK_FALSE(fracture_attributes_bounded(m));
+  m.attributes.corners[4] = std::numeric_limits<double>::infinity();
+  CHECK_FALSE(fracture_attributes_bounded(m));
+  // The box reaches 0.5 m from the origin: 0.5 / scale must stay within a sixteenth of the largest double.
+  m = good;
+  m.attributes.cut.uv_scale = 0.5 / (largest / 16.0);
+  CHECK(fracture_attributes_bounded(m));
+  m.attributes.cut.uv_scale = 1e-310;
+  CHECK_FALSE(fracture_attributes_bounded(m));
 }
 
 TEST_CASE("attributes: box mapping gives face normals, UVs of right and up over the scale, and a tangent along +u",

@@ -245,6 +245,39 @@ TEST_CASE("attributes: every fracturer refuses a corner value that is not finite
   }
 }
 
+TEST_CASE("attributes: no fracturer returns a corner value that is not finite, however large the input's values",
+          "[attributes][conformance]") {
+  // Values at the largest double, and cut faces whose UVs overflow (a UV scale of 1e-310 m against a
+  // box 2 m wide): a fracture refuses, saying so, or every value it returns is finite.
+  const Mesh box = attributed_box(make_box(Vec3(2.0, 3.0, 1.5)), AffineUv{});
+  Mesh huge_values = box;
+  for (double& v : huge_values.attributes.corners) v = std::copysign(std::numeric_limits<double>::max(), v);
+  Mesh tiny_scale = box;
+  tiny_scale.attributes.cut.uv_scale = 1e-310;
+  const Registries r = test::builtin_registries();
+  for (const std::string& name : r.fracturers.names()) {
+    auto fracturer = r.fracturers.create(name);
+    REQUIRE(fracturer.ok());
+    for (const bool tiny : {false, true}) {
+      INFO(name << (tiny ? ", UV scale 1e-310" : ", values at the largest double"));
+      FractureParams params;
+      params.fragments = 6;
+      params.seed = 11;
+      const Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(tiny ? tiny_scale : huge_values, params);
+      if (tiny) {
+        // Every cut face's UV is out of range: no fracture that cuts may succeed.
+        REQUIRE_FALSE(fragments.ok());
+      }
+      if (!fragments.ok()) {
+        CHECK_THAT(fragments.error().message, Catch::StartsWith(name + ": ") && Catch::Contains("overflow"));
+        continue;
+      }
+      for (const Fragment& f : *fragments)
+        for (const double v : f.mesh.attributes.corners) REQUIRE(std::isfinite(v));
+    }
+  }
+}
+
 TEST_CASE("attributes: a cylinder with a UV seam breaks as it does without attributes", "[attributes][conformance]") {
   const Mesh plain = make_cylinder(0.5, 1.2, 24);
   const Mesh seamed = seamed_cylinder(plain);
