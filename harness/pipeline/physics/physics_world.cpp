@@ -2,6 +2,7 @@
 #include "harness/pipeline/physics/collider_points.h"
 #include "harness/pipeline/physics/hull_pair_collision.h"
 #include "harness/pipeline/physics/narrow_phase_dispatcher.h"
+#include "harness/pipeline/physics/presized_pools.h"
 #include "harness/pipeline/physics/tight_hull_shape.h"
 
 #include <btBulletDynamicsCommon.h>
@@ -124,8 +125,9 @@ struct PhysicsWorld::Impl {
   btDefaultCollisionConfiguration configuration{pool_info(settings)};
   HullPairCollision hull_pairs;  ///< outlives the dispatcher that points to it
   NarrowPhaseDispatcher dispatcher{&configuration};
-  btDbvtBroadphase broadphase;
-  btSequentialImpulseConstraintSolver solver;
+  PresizedPairCache pairs{settings.contact_pool_size};  ///< outlives the broadphase that uses it
+  btDbvtBroadphase broadphase{&pairs};
+  PresizedSolver solver{settings.contact_pool_size};
   btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &configuration};
   std::unique_ptr<btCollisionShape> ground_shape;
   std::unique_ptr<btRigidBody> ground;

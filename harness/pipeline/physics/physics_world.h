@@ -58,7 +58,9 @@ struct PhysicsSettings {
   /// Contact manifolds (and as many collision algorithms) Bullet allocates when the world is made;
   /// a pair beyond them is allocated (and zeroed) in the step that finds it. One per overlapping pair
   /// of bounding boxes, so a scene's peak of pairs sized here moves that cost from the event's step
-  /// into the world's creation. Changes no result. >= 1 (Bullet's default 4096).
+  /// into the world's creation. The broadphase's pair cache and the solver's contact and friction
+  /// constraint arrays are made at this size too (presized_pools.h). Changes no result. >= 1
+  /// (Bullet's default 4096).
   int contact_pool_size = 4096;
   /// Pairs of hulls keep the axis that last proved them apart and skip GJK while it still does
   /// (hull_pair_collision.h). Changes no result: the same contacts, bit for bit.
