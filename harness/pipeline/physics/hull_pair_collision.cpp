@@ -54,6 +54,26 @@ struct SharedCounts {
   std::atomic<long> probed{0};
 };
 
+// Bullet's convex-convex algorithm makes its pair's contact manifold at the start of the pair's first
+// test, in members it keeps private. To answer a first test without GJK, the manifold is made here at
+// that same point, the same way, and handed to those members, so that Bullet finds afterwards what it
+// would have made itself. The members are reached by naming them in an explicit instantiation, where
+// the language does not check access.
+template <class Tag, typename Tag::type Member>
+struct PrivateMember {
+  friend typename Tag::type member_of(Tag) { return Member; }
+};
+struct ManifoldPtrOf {
+  using type = btPersistentManifold* btConvexConvexAlgorithm::*;
+  friend type member_of(ManifoldPtrOf);
+};
+struct OwnsManifoldOf {
+  using type = bool btConvexConvexAlgorithm::*;
+  friend type member_of(OwnsManifoldOf);
+};
+template struct PrivateMember<ManifoldPtrOf, &btConvexConvexAlgorithm::m_manifoldPtr>;
+template struct PrivateMember<OwnsManifoldOf, &btConvexConvexAlgorithm::m_ownManifold>;
+
 class HullPairAlgorithm final : public btConvexConvexAlgorithm {
  public:
   HullPairAlgorithm(const btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* w0,
@@ -66,9 +86,17 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
   void processCollision(const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
                         const btDispatcherInfo& info, btManifoldResult* out) override {
     counts_.tests.fetch_add(1, std::memory_order_relaxed);
-    // The manifold is Bullet's to make (first test of the pair); a pair with contact points is near.
     auto* manifold = const_cast<btPersistentManifold*>(getManifold());
-    if (manifold != nullptr && manifold->getNumContacts() == 0 && proven_apart(w0, w1, *manifold, *out)) {
+    const bool first = manifold == nullptr;
+    if (first) {
+      // What Bullet's test does first: make the pair's manifold, owned by the algorithm.
+      manifold = m_dispatcher->getNewManifold(w0->getCollisionObject(), w1->getCollisionObject());
+      this->*member_of(ManifoldPtrOf{}) = manifold;
+      this->*member_of(OwnsManifoldOf{}) = true;
+    }
+    // A pair with contact points is near. On a first test only the centres' line is tried: most new
+    // pairs that are not apart touch, and for them a GJK probe would only precede Bullet's own.
+    if (manifold->getNumContacts() == 0 && proven_apart(w0, w1, *manifold, *out, !first)) {
       out->setPersistentManifold(manifold);  // what Bullet leaves behind for a pair beyond reach
       return;
     }
@@ -77,9 +105,10 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
 
  private:
   /// True when the hulls are apart by more than both margins plus the manifold's contact breaking
-  /// threshold (Bullet's reach for a contact point), proven along the kept axis or along GJK's.
+  /// threshold (Bullet's reach for a contact point), proven along the kept axis, the centres' line or
+  /// (with `gjk_probe`) GJK's.
   bool proven_apart(const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
-                    const btPersistentManifold& manifold, const btManifoldResult& out) {
+                    const btPersistentManifold& manifold, const btManifoldResult& out, bool gjk_probe) {
     const auto& a = *static_cast<const btConvexHullShape*>(w0->getCollisionShape());
     const auto& b = *static_cast<const btConvexHullShape*>(w1->getCollisionShape());
     const btTransform& ta = w0->getWorldTransform();
@@ -98,6 +127,7 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
     has_axis_ = false;
     const btVector3 centres = tb.getOrigin() - ta.getOrigin();
     if (centres.length2() > SIMD_EPSILON && keep_if_apart(centres.normalized(), a, ta, b, tb, needed)) return true;
+    if (!gjk_probe) return false;
     // Then Bullet's GJK (no penetration solver: only its axis is wanted), which stops as soon as an
     // axis shows the pair beyond reach; check that axis exactly, either way round, and keep it.
     btVoronoiSimplexSolver simplex;

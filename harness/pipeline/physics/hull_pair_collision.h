@@ -3,14 +3,15 @@
 // axis kept per pair in front of it. Most pairs of a pile of pieces have overlapping bounding boxes but
 // are apart; Bullet runs GJK on each of them every step. Here a pair without contact points first
 // tries the axis that proved it apart last time, two scans of the hull points; when that fails, the
-// line between the bodies' centres, then GJK, and the axis that works is kept.
+// line between the bodies' centres, then GJK, and the axis that works is kept. A pair's first test
+// (an event's new pieces bring thousands at once) tries the centres' line only, then Bullet's test.
 //
 // The result is Bullet's own: a pair is skipped only when the hulls are proven apart by more than
 // both margins plus the contact breaking threshold (a lower bound from the support scans, with a
 // round-off allowance), and then Bullet's algorithm would add no contact point either (it drops every
 // point beyond that threshold) and would only refresh an empty manifold. The manifold itself is made
-// by Bullet's algorithm on the pair's first test and kept, so the manifolds and their order, the
-// solver's input, are the same: trajectories are identical bit for bit
+// on the pair's first test as Bullet's algorithm makes it there (and handed to it) and kept, so the
+// manifolds and their order, the solver's input, are the same: trajectories are identical bit for bit
 // (tests/harness/pipeline/physics/hull_pair_collision_tests.cpp).
 
 class btCollisionDispatcher;
