@@ -52,6 +52,7 @@ struct SharedCounts {
   std::atomic<long> tests{0};
   std::atomic<long> skipped{0};
   std::atomic<long> probed{0};
+  std::atomic<long> first_apart{0};
 };
 
 // Bullet's convex-convex algorithm makes its pair's contact manifold at the start of the pair's first
@@ -97,6 +98,7 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
     // A pair with contact points is near. On a first test only the centres' line is tried: most new
     // pairs that are not apart touch, and for them a GJK probe would only precede Bullet's own.
     if (manifold->getNumContacts() == 0 && proven_apart(w0, w1, *manifold, *out, !first)) {
+      if (first) counts_.first_apart.fetch_add(1, std::memory_order_relaxed);
       out->setPersistentManifold(manifold);  // what Bullet leaves behind for a pair beyond reach
       return;
     }
@@ -191,7 +193,8 @@ void HullPairCollision::register_with(btCollisionDispatcher& dispatcher) {
 }
 
 HullPairCounts HullPairCollision::counts() const {
-  return {create_->counts.tests.load(), create_->counts.skipped.load(), create_->counts.probed.load()};
+  return {create_->counts.tests.load(), create_->counts.skipped.load(), create_->counts.probed.load(),
+          create_->counts.first_apart.load()};
 }
 
 }  // namespace shatter

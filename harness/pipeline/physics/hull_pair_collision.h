@@ -22,7 +22,8 @@ namespace shatter {
 struct HullPairCounts {
   long tests = 0;    ///< hull-hull pair tests (every step, every pair with overlapping boxes)
   long skipped = 0;  ///< tests answered by a kept separating axis (no GJK)
-  long probed = 0;   ///< tests where the kept axis failed and a new one (the centres' line or GJK's) proved the pair apart
+  long probed = 0;   ///< tests where no kept axis answered and a new one (the centres' line or GJK's) proved the pair apart
+  long first_apart = 0;  ///< of those, a pair's first test, answered by the centres' line (no GJK in that step)
 };
 
 /// The hull-hull pair test with kept separating axes, registered with a dispatcher for pairs of

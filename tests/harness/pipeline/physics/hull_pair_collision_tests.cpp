@@ -87,10 +87,14 @@ TEST_CASE("hull pairs: kept separating axes skip most tests and change no trajec
   const Run kept = drop_pile(true);
   CHECK(bullet.counts.tests == 0);  // Bullet's own algorithm ran
   REQUIRE(kept.counts.tests > 0);
-  INFO("tests " << kept.counts.tests << ", skipped " << kept.counts.skipped << ", probed " << kept.counts.probed);
+  INFO("tests " << kept.counts.tests << ", skipped " << kept.counts.skipped << ", probed " << kept.counts.probed
+                 << ", first tests apart " << kept.counts.first_apart);
   // Most pairs of the pile are apart and stay apart: the kept axis answers them.
   CHECK(kept.counts.skipped > kept.counts.tests / 2);
   CHECK(kept.counts.probed > 0);
+  // The pieces start spread apart: many pairs' first tests are answered without GJK.
+  CHECK(kept.counts.first_apart > 0);
+  CHECK(kept.counts.first_apart <= kept.counts.probed);
   CHECK(bullet.peak_pairs == kept.peak_pairs);
   REQUIRE(bullet.positions.size() == kept.positions.size());
   CHECK(bullet.positions == kept.positions);
@@ -108,6 +112,7 @@ TEST_CASE("hull pairs: the narrow phase on worker threads changes no trajectory"
     CHECK(many.counts.tests == one.counts.tests);
     CHECK(many.counts.skipped == one.counts.skipped);
     CHECK(many.counts.probed == one.counts.probed);
+    CHECK(many.counts.first_apart == one.counts.first_apart);
     CHECK(many.peak_pairs == one.peak_pairs);
     CHECK(many.positions == one.positions);
     CHECK(many.rotations == one.rotations);
