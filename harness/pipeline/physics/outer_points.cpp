@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
+#include <numeric>
 
 namespace shatter {
 namespace {
@@ -114,7 +115,10 @@ bool inside_flat(const Fan& fan, double delta) {
 VertexPlanes vertex_planes(const Mesh& mesh) {
   const std::size_t n = mesh.vertices.size();
   VertexPlanes out;
-  std::vector<std::int32_t> first(n + 1, 0);  // each vertex's slots: one per face it is on
+  // Each vertex's slots, one per face it is on: counted into ring_start, then offsets (twice a slot's
+  // for the ring, which holds two neighbours a face).
+  std::vector<std::int32_t>& first = out.normal_start;  // the slots' offsets until the normals are known
+  first.assign(n + 1, 0);
   for (const Triangle& t : mesh.triangles)
     for (const std::int32_t v : t) ++first[static_cast<std::size_t>(v) + 1];
   for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
@@ -122,35 +126,48 @@ VertexPlanes vertex_planes(const Mesh& mesh) {
   out.ring_start.resize(n + 1);
   for (std::size_t v = 0; v <= n; ++v) out.ring_start[v] = 2 * first[v];
   out.ring.resize(2 * static_cast<std::size_t>(first[n]));
-  std::vector<Vec3> slots(static_cast<std::size_t>(first[n]));
-  std::vector<std::int32_t> used(n, 0);
-  std::vector<std::int32_t> filled(n, 0);
+  // Scratch kept per thread (the colliders of an event's pieces are planned on workers).
+  thread_local std::vector<Vec3> slots;
+  thread_local std::vector<std::int32_t> used;
+  thread_local std::vector<std::int32_t> filled;
+  slots.resize(static_cast<std::size_t>(first[n]));
+  used.assign(n, 0);
+  filled.assign(n, 0);
+  const auto add_corner = [&](std::int32_t corner, std::int32_t next, std::int32_t after, bool has_plane,
+                              const Vec3& normal) {
+    const auto v = static_cast<std::size_t>(corner);
+    std::int32_t& at = filled[v];
+    const auto ring_at = static_cast<std::size_t>(out.ring_start[v] + at);
+    out.ring[ring_at] = next;
+    out.ring[ring_at + 1] = after;
+    at += 2;
+    if (!has_plane) return;
+    Vec3* begin = slots.data() + first[v];
+    Vec3* end = begin + used[v];
+    if (std::none_of(begin, end, [&](const Vec3& m) { return m.dot(normal) > kSamePlaneDot; })) {
+      *end = normal;
+      ++used[v];
+    }
+  };
   for (const Triangle& t : mesh.triangles) {
     const Vec3& a = mesh.vertices[static_cast<std::size_t>(t[0])];
     Vec3 normal = (mesh.vertices[static_cast<std::size_t>(t[1])] - a).cross(mesh.vertices[static_cast<std::size_t>(t[2])] - a);
     const double len = normal.norm();
     const bool has_plane = len > 0.0;
     if (has_plane) normal /= len;
-    for (int c = 0; c < 3; ++c) {
-      const auto v = static_cast<std::size_t>(t[c]);
-      std::int32_t& at = filled[v];
-      out.ring[static_cast<std::size_t>(out.ring_start[v] + at++)] = t[(c + 1) % 3];
-      out.ring[static_cast<std::size_t>(out.ring_start[v] + at++)] = t[(c + 2) % 3];
-      if (!has_plane) continue;
-      Vec3* begin = slots.data() + first[v];
-      Vec3* end = begin + used[v];
-      if (std::none_of(begin, end, [&](const Vec3& m) { return m.dot(normal) > kSamePlaneDot; })) {
-        *end = normal;
-        ++used[v];
-      }
-    }
+    add_corner(t[0], t[1], t[2], has_plane, normal);
+    add_corner(t[1], t[2], t[0], has_plane, normal);
+    add_corner(t[2], t[0], t[1], has_plane, normal);
   }
-  out.normal_start.resize(n + 1);
-  out.normal_start[0] = 0;
-  for (std::size_t v = 0; v < n; ++v) out.normal_start[v + 1] = out.normal_start[v] + used[v];
-  out.normals.resize(static_cast<std::size_t>(out.normal_start[n]));
-  for (std::size_t v = 0; v < n; ++v)
-    std::copy_n(slots.begin() + first[v], used[v], out.normals.begin() + out.normal_start[v]);
+  out.normals.resize(static_cast<std::size_t>(std::accumulate(used.begin(), used.end(), std::int32_t{0})));
+  // The slots' offsets become the normals' (each vertex's distinct planes, packed in vertex order).
+  std::int32_t next = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    std::copy_n(slots.begin() + first[v], used[v], out.normals.begin() + next);
+    first[v] = next;
+    next += used[v];
+  }
+  first[n] = next;
   return out;
 }
 
