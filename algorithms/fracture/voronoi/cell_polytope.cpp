@@ -20,29 +20,51 @@ CornerKey corner_key(int a, int b, int c) {
 
 // The box as six outward counter-clockwise quads. Face labels: -1 x-min, -2 x-max, -3 y-min,
 // -4 y-max, -5 z-min, -6 z-max. Corner k has x from bit 0, y from bit 1, z from bit 2.
+namespace {
+
+/// The corners of each box face, counter-clockwise seen from outside (corner k has bit 0 for x, 1 for
+/// y, 2 for z at the box's max).
+constexpr int kBoxQuads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
+
+/// The label of box face `face`.
+constexpr int box_label(int face) { return -1 - face; }
+
+/// The label of the face across each edge of each box face: the other box face holding both corners.
+/// The same for every box, so found once.
+const std::array<std::array<int, 4>, 6>& box_across() {
+  static const std::array<std::array<int, 4>, 6> across = [] {
+    std::array<std::array<int, 4>, 6> out{};
+    for (int f = 0; f < 6; ++f)
+      for (int k = 0; k < 4; ++k) {
+        const int a = kBoxQuads[f][k];
+        const int c = kBoxQuads[f][(k + 1) % 4];
+        for (int g = 0; g < 6; ++g) {
+          if (g == f) continue;
+          const int* q = kBoxQuads[g];
+          if (std::find(q, q + 4, a) != q + 4 && std::find(q, q + 4, c) != q + 4) out[f][k] = box_label(g);
+        }
+      }
+    return out;
+  }();
+  return across;
+}
+
+}  // namespace
+
 CellPolytope box_polytope(const Aabb& b) {
   CellPolytope p;
   p.ok = true;
+  p.corners.reserve(8);
   for (int k = 0; k < 8; ++k)
     p.corners.emplace_back((k & 1) ? b.max.x() : b.min.x(), (k & 2) ? b.max.y() : b.min.y(),
                            (k & 4) ? b.max.z() : b.min.z());
-  const int quads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
-  // The face across each quad edge is the other box face holding both corners.
-  const auto label_of = [](int face) { return -1 - face; };
+  const std::array<std::array<int, 4>, 6>& across = box_across();
+  p.faces.resize(6);
   for (int f = 0; f < 6; ++f) {
-    CellPolytope::Face face;
-    face.label = label_of(f);
-    for (int k = 0; k < 4; ++k) {
-      const int a = quads[f][k];
-      const int c = quads[f][(k + 1) % 4];
-      face.corners.push_back(a);
-      for (int g = 0; g < 6; ++g) {
-        if (g == f) continue;
-        const int* q = quads[g];
-        if (std::find(q, q + 4, a) != q + 4 && std::find(q, q + 4, c) != q + 4) face.across.push_back(label_of(g));
-      }
-    }
-    p.faces.push_back(std::move(face));
+    CellPolytope::Face& face = p.faces[static_cast<std::size_t>(f)];
+    face.label = box_label(f);
+    face.corners.assign(kBoxQuads[f], kBoxQuads[f] + 4);
+    face.across.assign(across[static_cast<std::size_t>(f)].begin(), across[static_cast<std::size_t>(f)].end());
   }
   return p;
 }
