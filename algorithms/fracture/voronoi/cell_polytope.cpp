@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -89,14 +91,17 @@ bool clip(CellPolytope& p, const Plane& plane, int label) {
   s.made.clear();
   s.new_edges.clear();
   bool any_above = false;
-  // Only the corners of live faces matter; corners cut off earlier keep a dummy distance.
-  s.d.assign(p.corners.size(), -1.0);
+  // Only the corners of live faces matter, each measured once (a corner is on three faces or more);
+  // corners cut off earlier stay unmeasured (NaN) and are never read.
+  s.d.assign(p.corners.size(), std::numeric_limits<double>::quiet_NaN());
   for (const CellPolytope::Face& face : p.faces)
     for (const std::int32_t c : face.corners) {
       const auto sc = static_cast<std::size_t>(c);
-      s.d[sc] = plane.normal.dot(p.corners[sc] - plane.point);
-      if (s.d[sc] == 0.0) return false;
-      any_above |= s.d[sc] > 0;
+      double& d = s.d[sc];
+      if (!std::isnan(d)) continue;
+      d = plane.normal.dot(p.corners[sc] - plane.point);
+      if (d == 0.0) return false;
+      any_above |= d > 0;
     }
   if (!any_above) return true;
   const auto crossing = [&](int fa, int fb, std::int32_t a, std::int32_t b) {
