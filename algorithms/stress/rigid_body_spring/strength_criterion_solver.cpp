@@ -12,7 +12,7 @@ namespace shatter {
 
 StrengthCriterionSolver::StrengthCriterionSolver(const SupportGraph& graph, const Material& material,
                                                  Criterion criterion, const SpringSolverSettings& settings)
-    : graph_(graph), material_(material), criterion_(criterion), settings_(settings) {}
+    : graph_(graph), material_(material), criterion_(criterion), settings_(settings), stiffness_(graph, material) {}
 
 StrengthCriterionSolver::~StrengthCriterionSolver() = default;
 
@@ -73,7 +73,7 @@ Result<StressResult> StrengthCriterionSolver::reevaluate(const Loads& loads, con
     for (std::size_t c = 0; c < components.nodes.size(); ++c) {
       if (!solve[c]) continue;
       const SolverReport r = solve_component(graph, components.nodes[c], components.bonds[c], f, material, settings_,
-                                             memory_, out.displacements, forces);
+                                             memory_, out.displacements, forces, &stiffness_);
       add_solver_report(*report, r);
     }
   }

@@ -4,13 +4,15 @@
 ///
 /// Design note: everything worth keeping between solves of one structure lives here, for the
 /// solver's life, and nowhere else: the systems solved before with their factors and the analysed
-/// factors by pattern (SolverMemory, solved_systems.h), and the cascade solver (cascade_solver.h)
-/// with the intact graph's pattern, block split and factors. The pipeline keeps one solver per
+/// factors by pattern (SolverMemory, solved_systems.h), each bond's spring and stiffness blocks
+/// (bond_stiffness_cache.h: a component solved again is assembled from them, with the same numbers),
+/// and the cascade solver (cascade_solver.h) with the intact graph's pattern, block split and factors. The pipeline keeps one solver per
 /// standing structure for a whole run, so every event starts with the work of the ones before. Paths
 /// are chosen as a solver without history would choose them: a first evaluation, and a cascade's first
 /// round (a `previous` without displacements), go per component; the later rounds of a cascade go
 /// through the cascade solver. So the results do not depend on what the solver solved before.
 
+#include "algorithms/stress/rigid_body_spring/bond_stiffness_cache.h"
 #include "algorithms/stress/rigid_body_spring/cascade_solver.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/solved_systems.h"
@@ -43,6 +45,7 @@ class StrengthCriterionSolver final : public StressSolver {
   Criterion criterion_;
   SpringSolverSettings settings_;
   SolverMemory memory_;                    // before cascade_: the cascade returns its factors to it
+  BondStiffnessCache stiffness_;           // the bonds' springs and blocks, from each bond's first solve
   std::unique_ptr<CascadeSolver> cascade_; // made by the first round that continues a cascade
 };
 
