@@ -20,12 +20,11 @@ CornerKey corner_key(int a, int b, int c) {
 
 }  // namespace
 
-// The box as six outward counter-clockwise quads. Face labels: -1 x-min, -2 x-max, -3 y-min,
-// -4 y-max, -5 z-min, -6 z-max. Corner k has x from bit 0, y from bit 1, z from bit 2.
 namespace {
 
-/// The corners of each box face, counter-clockwise seen from outside (corner k has bit 0 for x, 1 for
-/// y, 2 for z at the box's max).
+// The box as six outward counter-clockwise quads. Face labels: -1 x-min, -2 x-max, -3 y-min,
+// -4 y-max, -5 z-min, -6 z-max. Corner k has x from bit 0, y from bit 1, z from bit 2 (set: the
+// box's max).
 constexpr int kBoxQuads[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4}, {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
 
 /// The label of box face `face`.

@@ -6,11 +6,12 @@
 /// solver's life, and nowhere else: the systems solved before with their factors and the analysed
 /// factors by pattern (SolverMemory, solved_systems.h), each bond's spring and stiffness blocks
 /// (bond_stiffness_cache.h: a component solved again is assembled from them, with the same numbers),
-/// and the cascade solver (cascade_solver.h) with the intact graph's pattern, block split and factors. The pipeline keeps one solver per
-/// standing structure for a whole run, so every event starts with the work of the ones before. Paths
-/// are chosen as a solver without history would choose them: a first evaluation, and a cascade's first
-/// round (a `previous` without displacements), go per component; the later rounds of a cascade go
-/// through the cascade solver. So the results do not depend on what the solver solved before.
+/// and the cascade solver (cascade_solver.h) with the intact graph's pattern, block split and
+/// factors. The pipeline keeps one solver per standing structure for a whole run, so every event
+/// starts with the work of the ones before. Paths are chosen as a solver without history would
+/// choose them: a first evaluation, and a cascade's first round (a `previous` without
+/// displacements), go per component; the later rounds of a cascade go through the cascade solver.
+/// So the results do not depend on what the solver solved before.
 
 #include "algorithms/stress/rigid_body_spring/bond_stiffness_cache.h"
 #include "algorithms/stress/rigid_body_spring/cascade_solver.h"
