@@ -95,8 +95,9 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
       this->*member_of(ManifoldPtrOf{}) = manifold;
       this->*member_of(OwnsManifoldOf{}) = true;
     }
-    // A pair with contact points is near. On a first test only the centres' line is tried: most new
-    // pairs that are not apart touch, and for them a GJK probe would only precede Bullet's own.
+    // A pair with contact points is near. On a first test only the centres' line is tried: a new pair
+    // it does not separate often touches (an event's pieces start side by side), and then a GJK probe
+    // would only precede Bullet's own.
     if (manifold->getNumContacts() == 0 && proven_apart(w0, w1, *manifold, *out, !first)) {
       if (first) counts_.first_apart.fetch_add(1, std::memory_order_relaxed);
       out->setPersistentManifold(manifold);  // what Bullet leaves behind for a pair beyond reach

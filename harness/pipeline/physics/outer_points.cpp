@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <numeric>
 
 namespace shatter {
 namespace {
@@ -115,22 +114,19 @@ bool inside_flat(const Fan& fan, double delta) {
 VertexPlanes vertex_planes(const Mesh& mesh) {
   const std::size_t n = mesh.vertices.size();
   VertexPlanes out;
-  // Each vertex's slots, one per face it is on: counted into ring_start, then offsets (twice a slot's
-  // for the ring, which holds two neighbours a face).
-  std::vector<std::int32_t>& first = out.normal_start;  // the slots' offsets until the normals are known
-  first.assign(n + 1, 0);
+  // Each vertex's ring holds two neighbours for each face it is on: counted, then offsets.
+  out.ring_start.assign(n + 1, 0);
   for (const Triangle& t : mesh.triangles)
-    for (const std::int32_t v : t) ++first[static_cast<std::size_t>(v) + 1];
-  for (std::size_t v = 0; v < n; ++v) first[v + 1] += first[v];
-
-  out.ring_start.resize(n + 1);
-  for (std::size_t v = 0; v <= n; ++v) out.ring_start[v] = 2 * first[v];
-  out.ring.resize(2 * static_cast<std::size_t>(first[n]));
-  // Scratch kept per thread (the colliders of an event's pieces are planned on workers).
+    for (const std::int32_t v : t) out.ring_start[static_cast<std::size_t>(v) + 1] += 2;
+  for (std::size_t v = 0; v < n; ++v) out.ring_start[v + 1] += out.ring_start[v];
+  out.ring.resize(static_cast<std::size_t>(out.ring_start[n]));
+  // Scratch kept per thread (the colliders of an event's pieces are planned on workers): a slot for a
+  // plane per face a vertex is on (vertex v's from ring_start[v] / 2), how many of them hold a distinct
+  // plane, and how much of each ring is filled.
   thread_local std::vector<Vec3> slots;
   thread_local std::vector<std::int32_t> used;
   thread_local std::vector<std::int32_t> filled;
-  slots.resize(static_cast<std::size_t>(first[n]));
+  slots.resize(static_cast<std::size_t>(out.ring_start[n] / 2));
   used.assign(n, 0);
   filled.assign(n, 0);
   const auto add_corner = [&](std::int32_t corner, std::int32_t next, std::int32_t after, bool has_plane,
@@ -142,7 +138,7 @@ VertexPlanes vertex_planes(const Mesh& mesh) {
     out.ring[ring_at + 1] = after;
     at += 2;
     if (!has_plane) return;
-    Vec3* begin = slots.data() + first[v];
+    Vec3* begin = slots.data() + out.ring_start[v] / 2;
     Vec3* end = begin + used[v];
     if (std::none_of(begin, end, [&](const Vec3& m) { return m.dot(normal) > kSamePlaneDot; })) {
       *end = normal;
@@ -159,15 +155,13 @@ VertexPlanes vertex_planes(const Mesh& mesh) {
     add_corner(t[1], t[2], t[0], has_plane, normal);
     add_corner(t[2], t[0], t[1], has_plane, normal);
   }
-  out.normals.resize(static_cast<std::size_t>(std::accumulate(used.begin(), used.end(), std::int32_t{0})));
-  // The slots' offsets become the normals' (each vertex's distinct planes, packed in vertex order).
-  std::int32_t next = 0;
-  for (std::size_t v = 0; v < n; ++v) {
-    std::copy_n(slots.begin() + first[v], used[v], out.normals.begin() + next);
-    first[v] = next;
-    next += used[v];
-  }
-  first[n] = next;
+  // Each vertex's distinct planes, packed in vertex order.
+  out.normal_start.resize(n + 1);
+  out.normal_start[0] = 0;
+  for (std::size_t v = 0; v < n; ++v) out.normal_start[v + 1] = out.normal_start[v] + used[v];
+  out.normals.resize(static_cast<std::size_t>(out.normal_start[n]));
+  for (std::size_t v = 0; v < n; ++v)
+    std::copy_n(slots.begin() + out.ring_start[v] / 2, used[v], out.normals.begin() + out.normal_start[v]);
   return out;
 }
 
