@@ -78,6 +78,24 @@ void PlanarDressing::write(const Vec3& a, const Vec3& b, const Vec3& c, double* 
   const std::array<double, 3> normal{fixed_[0], fixed_[1], fixed_[2]};
   const double* t = fixed_.data() + tangent_offset_;
   const std::array<double, 4> tangent{t[0], t[1], t[2], t[3]};
+  if (normals_ && uv_sets_ == 1 && tangents_) {
+    // The layout of most textured assets (glTF's NORMAL, TEXCOORD_0, TANGENT): straight-line stores.
+    for (const Vec3* q : {&a, &b, &c}) {
+      const double u = q->dot(e1_) / scale_;
+      const double v = q->dot(e2_) / scale_;
+      out[0] = normal[0];
+      out[1] = normal[1];
+      out[2] = normal[2];
+      out[3] = u;
+      out[4] = v;
+      out[5] = tangent[0];
+      out[6] = tangent[1];
+      out[7] = tangent[2];
+      out[8] = tangent[3];
+      out += 9;
+    }
+    return;
+  }
   const auto stride = static_cast<std::size_t>(stride_);
   for (const Vec3* q : {&a, &b, &c}) {
     if (normals_)

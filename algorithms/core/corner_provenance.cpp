@@ -82,19 +82,23 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
     out.tags = std::move(piece.tags);
     return out;
   }
-  // Every face's values appended in order to one array reserved once, never zeroed first: a run of
-  // whole faces in one copy, a cap or cut face through a small buffer.
+  // Every face's values appended in order to one array reserved once: a run of whole faces in one
+  // copy, a run of cap and cut faces written in place after one resize (its zeroing costs less than
+  // a copy of each face from a buffer; the whole faces' values, most of a large piece's, are written
+  // once).
   std::vector<double>& corners = attr.corners;
   corners.reserve(faces * face_values);
   const double* solid_values = solid_.attributes.corners.data();
-  std::array<double, 3 * kMaxCornerValues> buffer;
+  const auto whole = [&](std::size_t face) {
+    return records[face] >= 0 && records[face] < solid_faces_;
+  };
   std::size_t f = 0;
   while (f < faces) {
     const std::int32_t record = records[f];
-    if (record >= 0 && record < solid_faces_) {
+    std::size_t run = 1;
+    if (whole(f)) {
       // A run of whole solid faces in the solid's order (slicing keeps the order of the faces it passes
       // on): one copy for the run.
-      std::size_t run = 1;
       while (f + run < faces && records[f + run] == record + static_cast<std::int32_t>(run) &&
              record + static_cast<std::int32_t>(run) < solid_faces_)
         ++run;
@@ -107,14 +111,21 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
       f += run;
       continue;
     }
-    if (is_cap(record)) {
-      const Triangle& t = piece.triangles[f];
-      cap_dressings_[static_cast<std::size_t>(-record - 1)].write(
-          piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
-          piece.vertices[static_cast<std::size_t>(t[2])], buffer.data());
-      if (materials) attr.materials[f] = attr.cut.material;
-    } else {
-      const Cut& cut = cuts_[static_cast<std::size_t>(record - solid_faces_)];
+    while (f + run < faces && !whole(f + run)) ++run;
+    const std::size_t at = corners.size();
+    corners.resize(at + run * face_values);
+    double* out_values = corners.data() + at;
+    for (const std::size_t end = f + run; f < end; ++f, out_values += face_values) {
+      const std::int32_t r = records[f];
+      if (is_cap(r)) {
+        const Triangle& t = piece.triangles[f];
+        cap_dressings_[static_cast<std::size_t>(-r - 1)].write(
+            piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
+            piece.vertices[static_cast<std::size_t>(t[2])], out_values);
+        if (materials) attr.materials[f] = attr.cut.material;
+        continue;
+      }
+      const Cut& cut = cuts_[static_cast<std::size_t>(r - solid_faces_)];
       const auto source = static_cast<std::size_t>(cut.face);
       // The weighted sum of interpolate_corners, inline: the same operations in the same order.
       const double* a = solid_values + source * face_values;
@@ -122,13 +133,11 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
       const double* c = b + stride;
       for (std::size_t k = 0; k < 3; ++k) {
         const CornerWeights& w = cut.weights[k];
-        double* corner = buffer.data() + k * stride;
+        double* corner = out_values + k * stride;
         for (std::size_t i = 0; i < stride; ++i) corner[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
       }
       if (materials) attr.materials[f] = solid_.attributes.materials[source];
     }
-    corners.insert(corners.end(), buffer.data(), buffer.data() + face_values);
-    ++f;
   }
   // Unless the solid's bounds rule out a value that is not finite (fracture_attributes_bounded), one
   // pass over the piece's values while they are still in cache.
