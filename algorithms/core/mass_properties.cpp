@@ -66,6 +66,26 @@ MassProperties mass_properties(const Mesh& mesh) {
   return result;
 }
 
+VolumeCentroid volume_centroid(const Mesh& mesh) {
+  // mass_properties' loop less the second moment: each sum takes the same terms in the same order.
+  const Vec3 origin = reference_point(mesh);
+  double six_volume = 0.0;
+  Vec3 moment24 = Vec3::Zero();
+  for (const Triangle& t : mesh.triangles) {
+    const Vec3 a = mesh.vertices[t[0]] - origin;
+    const Vec3 b = mesh.vertices[t[1]] - origin;
+    const Vec3 c = mesh.vertices[t[2]] - origin;
+    const double d = a.dot(b.cross(c));
+    six_volume += d;
+    moment24 += d * (a + b + c);
+  }
+  VolumeCentroid result;
+  result.volume = six_volume / 6.0;
+  if (six_volume == 0.0) return result;
+  result.centroid = origin + moment24 / (4.0 * six_volume);
+  return result;
+}
+
 double signed_volume(const Mesh& mesh) {
   const Vec3 origin = reference_point(mesh);
   double six_volume = 0.0;

@@ -18,6 +18,16 @@ struct MassProperties {
 /// Volume, centroid and inertia tensor (about the centroid, for density 1) of a closed mesh.
 MassProperties mass_properties(const Mesh& mesh);
 
+/// The volume and centroid of a closed mesh (no second moments).
+struct VolumeCentroid {
+  double volume = 0.0;           ///< m^3, signed as MassProperties::volume
+  Vec3 centroid = Vec3::Zero();  ///< m (zero when volume is zero)
+};
+
+/// mass_properties' volume and centroid without its second moments (about 40 % of its cost): the same
+/// sums in the same order, so the same values bit for bit. For a piece that is only cut again.
+VolumeCentroid volume_centroid(const Mesh& mesh);
+
 /// Signed volume only, m^3 (cheaper than mass_properties).
 double signed_volume(const Mesh& mesh);
 

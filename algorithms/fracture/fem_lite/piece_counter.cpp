@@ -82,7 +82,7 @@ int PieceCounter::add(const Plane& plane, double min_volume) {
     if (min_volume > 0.0) {
       for (const std::vector<SliceKernel::Piece>* side : {&below, &above})
         for (const SliceKernel::Piece& part : *side)
-          if (signed_volume(part.mesh) < min_volume) return 0;
+          if (part.shape.volume < min_volume) return 0;  // the sum signed_volume takes
     }
     // The order of slice_by_planes (recursive_slicing.h): each side's parts sorted, below first.
     order_parts(kernel_, below);

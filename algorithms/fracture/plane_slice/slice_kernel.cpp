@@ -19,8 +19,8 @@ void SliceKernel::split(const Piece& piece, const Plane& plane, std::vector<Piec
 
 void SliceKernel::append_parts(Mesh&& mesh, std::vector<Piece>& out) {
   for (Mesh& part : volume_components(std::move(mesh))) {
-    MassProperties mass = mass_properties(part);
-    out.push_back({std::move(part), mass});
+    const VolumeCentroid shape = volume_centroid(part);
+    out.push_back({std::move(part), shape});
   }
 }
 
@@ -36,12 +36,14 @@ Result<std::vector<Fragment>> to_fragments(std::vector<SliceKernel::Piece>&& pie
   out.reserve(pieces.size());
   for (SliceKernel::Piece& p : pieces) {
     if (provenance == nullptr) {
-      out.push_back({std::move(p.mesh), p.mass});
+      const MassProperties mass = mass_properties(p.mesh);
+      out.push_back({std::move(p.mesh), mass});
       continue;
     }
     Result<Mesh> resolved = provenance->resolve(std::move(p.mesh));
     if (!resolved) return resolved.error();
-    out.push_back({std::move(*resolved), p.mass});
+    const MassProperties mass = mass_properties(*resolved);
+    out.push_back({std::move(*resolved), mass});
   }
   return out;
 }

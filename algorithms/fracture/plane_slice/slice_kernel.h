@@ -20,13 +20,14 @@ class SliceKernel {
   /// Tracks the corners through `provenance` when given (an attributed solid), else cuts plain meshes.
   explicit SliceKernel(CornerProvenance* provenance) : provenance_(provenance) {}
 
-  /// A closed piece with its mass properties.
+  /// A closed piece with its volume and centroid (a piece may be cut again, so its second moments
+  /// wait for the fragments: to_fragments).
   struct Piece {
     Mesh mesh;
-    MassProperties mass;
+    VolumeCentroid shape;
   };
 
-  [[nodiscard]] Vec3 centroid(const Piece& piece) const { return piece.mass.centroid; }
+  [[nodiscard]] Vec3 centroid(const Piece& piece) const { return piece.shape.centroid; }
 
   /// The volumes of `piece` below and above `plane`, appended to `below` and `above`; both left as
   /// they were when the plane does not cut the piece (or the cut could not be capped).
@@ -47,7 +48,8 @@ class SliceKernel {
 /// The solid's volumes as pieces: tracked by `provenance` when given.
 std::vector<SliceKernel::Piece> start_pieces(const Mesh& solid, const CornerProvenance* provenance);
 
-/// The pieces as fragments, their corner values evaluated through `provenance` when given.
+/// The pieces as fragments with their mass properties, their corner values evaluated through
+/// `provenance` when given.
 Result<std::vector<Fragment>> to_fragments(std::vector<SliceKernel::Piece>&& pieces, const CornerProvenance* provenance);
 
 }  // namespace shatter

@@ -195,3 +195,29 @@ TEST_CASE("mass: the symmetric second moment summed once per pair of entries is 
       for (int j = 0; j < 3; ++j) CHECK(got(i, j) == expected(i, j));
   }
 }
+
+TEST_CASE("mass: volume_centroid is the analytic volume and centroid, and mass_properties' bit for bit",
+          "[mass]") {
+  // Closed forms first: a box's centre, a corner tetrahedron's a b c / 6 and (a, b, c) / 4.
+  const VolumeCentroid box = volume_centroid(make_box(Vec3(2.0, 3.0, 5.0), Vec3(0.5, -1.0, 2.0)));
+  CHECK(box.volume == Approx(30.0).epsilon(1e-14));
+  CHECK((box.centroid - Vec3(0.5, -1.0, 2.0)).norm() < 1e-13);
+  const VolumeCentroid tet = volume_centroid(corner_tetrahedron(1.0, 2.0, 3.0));
+  CHECK(tet.volume == Approx(1.0).epsilon(1e-14));
+  CHECK((tet.centroid - Vec3(0.25, 0.5, 0.75)).norm() < 1e-14);
+  // A fracture cuts a piece again from its centroid and gives the fragment mass_properties' values:
+  // the two must agree exactly, or a piece would be cut through another point than before.
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  std::vector<Mesh> meshes = {make_torus(1.0, 0.3, 24, 12), make_sphere(0.8, 16, 8), make_box(Vec3(2, 3, 5)),
+                              make_tube(0.2, 0.5, 1.5, 20), Mesh{}};
+  Mesh turned = make_box(Vec3(0.4, 0.2, 0.1), Vec3(3.0, -2.0, 7.0));
+  for (Vec3& v : turned.vertices) v = turn * v;
+  meshes.push_back(std::move(turned));
+  for (const Mesh& mesh : meshes) {
+    const MassProperties full = mass_properties(mesh);
+    const VolumeCentroid first = volume_centroid(mesh);
+    CHECK(first.volume == full.volume);
+    CHECK(first.volume == signed_volume(mesh));
+    for (int i = 0; i < 3; ++i) CHECK(first.centroid[i] == full.centroid[i]);
+  }
+}
