@@ -66,9 +66,12 @@ Eigen::SparseMatrix<double> block_matrix(const Eigen::SparseMatrix<double>& k, s
     const int gc = block[static_cast<std::size_t>(c)];
     for (int at = k_outer[gc]; at < k_outer[gc + 1]; ++at) {
       const int gr = k_inner[at];
+      // The block's order is K's (both ascending), so the upper triangle is the rows above the
+      // column's own: skipped before the tolerance's arithmetic.
+      if (lower_only && gr < gc) continue;
       if (!kept(diagonal, gr, gc, k_value[at], tolerance) && gr != gc) continue;
       const int r = position[static_cast<std::size_t>(gr)];
-      if (lower_only && r < c) continue;
+      assert(!lower_only || r >= c);
       rows.push_back(r);
       values.push_back(k_value[at]);
     }
