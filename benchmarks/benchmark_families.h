@@ -18,6 +18,10 @@ void register_attribute_benchmarks(const Registries& registries);
 /// `registries` must outlive the benchmark run.
 void register_collider_benchmarks(const Registries& registries);
 
+/// physics/pile/<n>/<steps>: the physics steps of n plane-slice pieces of a block falling apart in
+/// contact (physics_benchmarks.cpp); `registries` must outlive the benchmark run.
+void register_physics_benchmarks(const Registries& registries);
+
 /// evaluate_wall/<model> and cascade_wall/<model> for every stress model of `registries`, which must
 /// outlive the benchmark run.
 void register_stress_benchmarks(const Registries& registries);

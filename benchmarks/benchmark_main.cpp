@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
   shatter::register_fracture_benchmarks(registries);
   shatter::register_attribute_benchmarks(registries);
   shatter::register_collider_benchmarks(registries);
+  shatter::register_physics_benchmarks(registries);
   shatter::register_stress_benchmarks(registries);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
