@@ -3,6 +3,7 @@
 #include "algorithms/core/triangle_locator.h"
 
 #include <algorithm>
+#include <cassert>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -79,7 +80,9 @@ void PlanarDressing::write(const Vec3& a, const Vec3& b, const Vec3& c, double* 
   const double* t = fixed_.data() + tangent_offset_;
   const std::array<double, 4> tangent{t[0], t[1], t[2], t[3]};
   if (normals_ && uv_sets_ == 1 && tangents_) {
-    // The layout of most textured assets (glTF's NORMAL, TEXCOORD_0, TANGENT): straight-line stores.
+    // The layout of most textured assets (glTF's NORMAL, TEXCOORD_0, TANGENT): straight-line stores
+    // at that layout's offsets (normal 0, UV 3, tangent 5, stride 9).
+    assert(stride_ == 9 && uv_offset_ == 3 && tangent_offset_ == 5);
     for (const Vec3* q : {&a, &b, &c}) {
       const double u = q->dot(e1_) / scale_;
       const double v = q->dot(e2_) / scale_;

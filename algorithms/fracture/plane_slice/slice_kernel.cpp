@@ -35,15 +35,14 @@ Result<std::vector<Fragment>> to_fragments(std::vector<SliceKernel::Piece>&& pie
   std::vector<Fragment> out;
   out.reserve(pieces.size());
   for (SliceKernel::Piece& p : pieces) {
-    if (provenance == nullptr) {
-      const MassProperties mass = mass_properties(p.mesh);
-      out.push_back({std::move(p.mesh), mass});
-      continue;
+    Mesh mesh = std::move(p.mesh);
+    if (provenance != nullptr) {
+      Result<Mesh> resolved = provenance->resolve(std::move(mesh));
+      if (!resolved) return resolved.error();
+      mesh = std::move(*resolved);
     }
-    Result<Mesh> resolved = provenance->resolve(std::move(p.mesh));
-    if (!resolved) return resolved.error();
-    const MassProperties mass = mass_properties(*resolved);
-    out.push_back({std::move(*resolved), mass});
+    const MassProperties mass = mass_properties(mesh);
+    out.push_back({std::move(mesh), mass});
   }
   return out;
 }
