@@ -75,6 +75,15 @@ struct OwnsManifoldOf {
 template struct PrivateMember<ManifoldPtrOf, &btConvexConvexAlgorithm::m_manifoldPtr>;
 template struct PrivateMember<OwnsManifoldOf, &btConvexConvexAlgorithm::m_ownManifold>;
 
+/// Makes `algorithm`'s manifold for `a` and `b`, owned by the algorithm, as Bullet's test does when it
+/// has none.
+void give_manifold(btConvexConvexAlgorithm& algorithm, btDispatcher& dispatcher, const btCollisionObject* a,
+                   const btCollisionObject* b) {
+  if (algorithm.getManifold() != nullptr) return;
+  algorithm.*member_of(ManifoldPtrOf{}) = dispatcher.getNewManifold(a, b);
+  algorithm.*member_of(OwnsManifoldOf{}) = true;
+}
+
 class HullPairAlgorithm final : public btConvexConvexAlgorithm {
  public:
   HullPairAlgorithm(const btCollisionAlgorithmConstructionInfo& ci, const btCollisionObjectWrapper* w0,
@@ -87,14 +96,11 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
   void processCollision(const btCollisionObjectWrapper* w0, const btCollisionObjectWrapper* w1,
                         const btDispatcherInfo& info, btManifoldResult* out) override {
     counts_.tests.fetch_add(1, std::memory_order_relaxed);
+    const bool first = !tested_;
+    tested_ = true;
+    // What Bullet's test does first: make the pair's manifold (unless the dispatcher made it already).
+    give_manifold(*this, *m_dispatcher, w0->getCollisionObject(), w1->getCollisionObject());
     auto* manifold = const_cast<btPersistentManifold*>(getManifold());
-    const bool first = manifold == nullptr;
-    if (first) {
-      // What Bullet's test does first: make the pair's manifold, owned by the algorithm.
-      manifold = m_dispatcher->getNewManifold(w0->getCollisionObject(), w1->getCollisionObject());
-      this->*member_of(ManifoldPtrOf{}) = manifold;
-      this->*member_of(OwnsManifoldOf{}) = true;
-    }
     // A pair with contact points is near. On a first test only the centres' line is tried: a new pair
     // it does not separate often touches (an event's pieces start side by side), and then a GJK probe
     // would only precede Bullet's own.
@@ -158,6 +164,7 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
   }
 
   SharedCounts& counts_;
+  bool tested_ = false;     ///< a test ran: the next is not the pair's first
   btVector3 axis_{0, 0, 1};  ///< world, from the first body's hull towards the second's
   bool has_axis_ = false;
 };
@@ -180,6 +187,11 @@ struct HullPairCollision::CreateFunc final : btCollisionAlgorithmCreateFunc {
     return new (memory) HullPairAlgorithm(ci, w0, w1, *bullet, counts);
   }
 };
+
+void make_hull_pair_manifold(btCollisionAlgorithm& algorithm, btCollisionDispatcher& dispatcher,
+                             const btCollisionObject* a, const btCollisionObject* b) {
+  give_manifold(static_cast<btConvexConvexAlgorithm&>(algorithm), dispatcher, a, b);
+}
 
 HullPairCollision::HullPairCollision() : create_(new CreateFunc) {}
 

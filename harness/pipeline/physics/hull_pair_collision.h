@@ -10,11 +10,14 @@
 // both margins plus the contact breaking threshold (a lower bound from the support scans, with a
 // round-off allowance), and then Bullet's algorithm would add no contact point either (it drops every
 // point beyond that threshold) and would only refresh an empty manifold. The manifold itself is made
-// on the pair's first test as Bullet's algorithm makes it there (and handed to it) and kept, so the
+// at the start of the pair's first test as Bullet's algorithm makes it there (or just before, by the
+// dispatcher: make_hull_pair_manifold) and handed to it and kept, so the
 // manifolds and their order, the solver's input, are the same: trajectories are identical bit for bit
 // (tests/harness/pipeline/physics/hull_pair_collision_tests.cpp).
 
+class btCollisionAlgorithm;
 class btCollisionDispatcher;
+class btCollisionObject;
 
 namespace shatter {
 
@@ -25,6 +28,13 @@ struct HullPairCounts {
   long probed = 0;   ///< tests where no kept axis answered and a new one (the centres' line or GJK's) proved the pair apart
   long first_apart = 0;  ///< of those, a pair's first test, answered by the centres' line (no GJK in that step)
 };
+
+/// Makes the contact manifold of a new pair of hulls `a` and `b` (in the pair's order) whose `algorithm`
+/// is Bullet's convex-convex one or this test's, as the pair's first test would make it first thing,
+/// and hands it to the algorithm: the first test itself can then run apart from the dispatcher's pools
+/// (narrow_phase_dispatcher.h). Nothing when the algorithm has its manifold.
+void make_hull_pair_manifold(btCollisionAlgorithm& algorithm, btCollisionDispatcher& dispatcher,
+                             const btCollisionObject* a, const btCollisionObject* b);
 
 /// The hull-hull pair test with kept separating axes, registered with a dispatcher for pairs of
 /// btConvexHullShape (the children of compound shapes included). Owns what the registration points to;

@@ -6,11 +6,13 @@
 // Design note: what allocates stays on the calling thread, in Bullet's order. A pair's first test
 // makes its collision algorithm and contact manifold (from the dispatcher's pools, appended to its
 // manifold list, which sets the solver's order), and a compound's test makes and frees child
-// algorithms. So the pairs are taken in Bullet's order once: those run at once, on the calling
-// thread; the others, pairs of two hulls that hold their manifold, each touching only its own
-// manifold and algorithm, are then tested on the workers. The manifolds, their order and their
-// contact points are those of the serial dispatch: trajectories are identical bit for bit on any
-// number of threads (tests/harness/pipeline/physics/hull_pair_collision_tests.cpp).
+// algorithms. So the pairs are taken in Bullet's order once: a new pair of two hulls gets its
+// algorithm and manifold made there, as Bullet's near callback and the pair's first test make them
+// (make_hull_pair_manifold), and the tests of compounds and the ground run there; the others, pairs
+// of two hulls that hold their manifold, each touching only its own manifold and algorithm, are then
+// tested on the workers. The manifolds, their order and their contact points are those of the serial
+// dispatch: trajectories are identical bit for bit on any number of threads
+// (tests/harness/pipeline/physics/hull_pair_collision_tests.cpp).
 
 #include <btBulletCollisionCommon.h>
 
@@ -31,6 +33,9 @@ class NarrowPhaseDispatcher final : public btCollisionDispatcher {
                                  btDispatcher* dispatcher) override;
 
  private:
+  /// Makes the algorithm and manifold of a new pair of two hulls that needs a test.
+  void prepare_first_test(btBroadphasePair& pair);
+
   Workers* workers_ = nullptr;
   std::vector<btBroadphasePair*> parallel_;  ///< this step's pairs for the workers
 };

@@ -6,6 +6,7 @@
 #include "harness/pipeline/physics/tight_hull_shape.h"
 
 #include <btBulletDynamicsCommon.h>
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionShapes/btShapeHull.h>
 
 #include <Eigen/Eigenvalues>
@@ -81,6 +82,19 @@ BodyMass combine(std::span<const Fragment> fragments) {
   return total;
 }
 
+/// The world's margin in Bullet's bounding-volume tree for the length of a call that moves boxes in the
+/// tree (a step, a rescale); Bullet's own value back afterwards (it is one process-wide variable).
+class TreeMarginScope {
+ public:
+  explicit TreeMarginScope(double margin) : saved_(gDbvtMargin) { gDbvtMargin = static_cast<btScalar>(margin); }
+  ~TreeMarginScope() { gDbvtMargin = saved_; }
+  TreeMarginScope(const TreeMarginScope&) = delete;
+  TreeMarginScope& operator=(const TreeMarginScope&) = delete;
+
+ private:
+  btScalar saved_;
+};
+
 }  // namespace
 
 Status validate_physics_settings(const PhysicsSettings& s) {
@@ -96,6 +110,8 @@ Status validate_physics_settings(const PhysicsSettings& s) {
     return Error{"physics.contact_pool_size: must be >= 1, got " + std::to_string(s.contact_pool_size)};
   if (!std::isfinite(s.collision_margin) || s.collision_margin < 0.0)
     return Error{"physics.collision_margin: must be finite and >= 0 m"};
+  if (!std::isfinite(s.broadphase_margin) || s.broadphase_margin < 0.0)
+    return Error{"physics.broadphase_margin: must be finite and >= 0 m"};
   if (!std::isfinite(s.friction) || s.friction < 0.0) return Error{"physics.friction: must be >= 0"};
   if (!std::isfinite(s.restitution) || s.restitution < 0.0 || s.restitution > 1.0)
     return Error{"physics.restitution: must be in [0, 1]"};
@@ -360,7 +376,10 @@ void PhysicsWorld::set_scale(int body, double scale) {
   require(std::isfinite(scale) && scale > 0.0, "scale must be finite and > 0");
   Body& b = const_cast<Body&>(impl_->body(body));
   b.shape->setLocalScaling(btVector3(static_cast<btScalar>(scale), static_cast<btScalar>(scale), static_cast<btScalar>(scale)));
-  if (b.in_world) impl_->world.updateSingleAabb(b.rigid.get());
+  if (b.in_world) {
+    const TreeMarginScope margin(impl_->settings.broadphase_margin);
+    impl_->world.updateSingleAabb(b.rigid.get());
+  }
 }
 
 void PhysicsWorld::remove(int body) {
@@ -382,6 +401,7 @@ void PhysicsWorld::apply_impulse(int body, const Vec3& impulse_Ns, const Vec3& w
 
 void PhysicsWorld::step() {
   const auto dt = static_cast<btScalar>(impl_->settings.fixed_step);
+  const TreeMarginScope margin(impl_->settings.broadphase_margin);
   impl_->world.stepSimulation(dt, 0);  // maxSubSteps = 0: exactly one step of dt, no interpolation
   ++impl_->steps;
 }

@@ -265,4 +265,11 @@ TEST_CASE("physics-world: settings out of range are refused with the field's nam
   const auto budget = PhysicsWorld::create(s);
   REQUIRE_FALSE(budget);
   CHECK(budget.error().message.find("physics.hull_vertex_budget") != std::string::npos);
+  for (const double margin : {-0.01, std::nan(""), HUGE_VAL}) {
+    s = PhysicsSettings{};
+    s.broadphase_margin = margin;
+    const auto grown = PhysicsWorld::create(s);
+    REQUIRE_FALSE(grown);
+    CHECK(grown.error().message.find("physics.broadphase_margin") != std::string::npos);
+  }
 }
