@@ -25,14 +25,16 @@ Result<FemLiteAnalysis> FemLiteFracturer::analyse(const Mesh& solid, const Fract
     return analysis;
   }
   analysis.resolution = budgeted_resolution(solid, settings_.resolution, settings_.max_cells);
-  const HexGrid grid = build_hex_grid(solid, analysis.resolution);
+  HexGrid grid = build_hex_grid(solid, analysis.resolution);
+  // A piece thinner than the budgeted grid's cells (a wall of a hollow frame) has no cell centre inside
+  // it: the next finer grids, up to the setting's resolution, until one has.
+  while (grid.elements.empty() && analysis.resolution < settings_.resolution)
+    grid = build_hex_grid(solid, ++analysis.resolution);
   analysis.elements = static_cast<int>(grid.elements.size());
   analysis.nodes = static_cast<int>(grid.nodes.size());
   if (grid.elements.empty())
     return Error{"fem-lite: no grid cell centre lies inside the solid at resolution " +
-                 std::to_string(analysis.resolution) +
-                 (analysis.resolution < settings_.resolution ? " (lowered to fit max_cells; raise max_cells)"
-                                                             : " (raise the resolution)")};
+                 std::to_string(analysis.resolution) + " (raise the resolution)"};
   Result<FemLoads> loads = fem_loads(grid, settings_, params.impact);
   if (!loads) return loads.error();
   analysis.inertia_relief = loads->inertia_relief;

@@ -19,7 +19,9 @@ namespace shatter {
 struct FemLiteAnalysis {
   std::vector<Plane> planes;     ///< crack planes, most stressed first (m; normals unit)
   int fragments = 0;             ///< fragments the planes cut the solid into
-  int resolution = 0;            ///< the grid's resolution: the setting's, or lower under max_cells
+  /// The grid's resolution: the setting's, or lower under max_cells (and raised again, up to the
+  /// setting's, until a cell centre lies inside the solid).
+  int resolution = 0;
   int elements = 0;              ///< kept grid cells
   int nodes = 0;                 ///< grid nodes of the kept cells
   int over_strength = 0;         ///< elements whose largest principal stress exceeds the tensile strength

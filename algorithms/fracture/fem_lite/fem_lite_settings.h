@@ -23,7 +23,9 @@ struct FemLiteSettings {
   /// The most cells the grid over the solid's bounding box may have, in [0, kFemLiteMaxCells]; 0 (the
   /// default) sets no budget. With a budget the resolution is lowered, one step at a time, until the
   /// grid fits (never below 2): a compact piece, whose cells grow as the cube of the resolution, then
-  /// costs at most the budget's solve, while a long thin one keeps its resolution. An approximation
+  /// costs at most the budget's solve, while a long thin one keeps its resolution. A piece with no cell
+  /// centre inside it at the lowered resolution (a thin-walled one) gets the next finer grid that has
+  /// one, up to `resolution`: its few cells inside are the solve's size. An approximation
   /// beyond `resolution`'s: a named option, off by default (docs/fem-lite.md, "Cost at runtime").
   int max_cells = 0;
   /// Elastic constants and strengths (default: concrete).

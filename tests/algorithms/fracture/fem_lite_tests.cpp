@@ -296,6 +296,42 @@ TEST_CASE("fem-lite: max_cells lowers the resolution of a compact piece to fit, 
   }
 }
 
+TEST_CASE("fem-lite: a thin-walled piece no budgeted cell centre lies in gets the next finer grid that has one",
+          "[fem-lite]") {
+  // A tube of 2 m across with a wall of 5 cm: at resolution 4 (the largest whose 4 x 4 x 4 grid fits a
+  // budget of 64 cells) the cell centres lie at 0.25 m and 0.75 m from the axis planes, that is 0.35,
+  // 0.79 and 1.06 m from the axis: in the bore or outside, none in the wall (0.95 to 1 m). At
+  // resolution 8 the centre (0.875, 0.375) lies 0.952 m from the axis: in the wall.
+  const Mesh tube = make_tube(0.95, 1.0, 2.0, 64);
+  FemLiteSettings budget;
+  budget.max_cells = 64;
+  REQUIRE(budgeted_resolution(tube, 16, 64) == 4);
+  REQUIRE(build_hex_grid(tube, 4).elements.empty());
+  FractureParams hit;
+  hit.fragments = 6;
+  hit.seed = 2;
+  hit.impact = Impact{Vec3(1.0, 0, 1.0), -Vec3::UnitX(), 4000.0, 0.5};
+  const Result<FemLiteAnalysis> a = FemLiteFracturer(budget).analyse(tube, hit);
+  REQUIRE(a);
+  CHECK(a->resolution > 4);
+  CHECK(a->resolution <= 8);
+  CHECK(a->elements > 0);
+  CHECK(build_hex_grid(tube, a->resolution - 1).elements.empty());  // the first finer grid that has one
+  const Result<std::vector<Fragment>> fragments = FemLiteFracturer(budget).fracture(tube, hit);
+  REQUIRE(fragments);
+  require_valid_fracture(tube, *fragments, 2);
+  // Without a budget nothing changes: the setting's resolution.
+  const Result<FemLiteAnalysis> unbudgeted = FemLiteFracturer().analyse(tube, hit);
+  REQUIRE(unbudgeted);
+  CHECK(unbudgeted->resolution == 16);
+  // A resolution no finer grid helps is refused as before.
+  FemLiteSettings coarse;
+  coarse.resolution = 4;
+  const Result<FemLiteAnalysis> refused = FemLiteFracturer(coarse).analyse(tube, hit);
+  REQUIRE_FALSE(refused);
+  CHECK(refused.error().message.find("raise the resolution") != std::string::npos);
+}
+
 TEST_CASE("fem-lite vs cgal-clip: its crack planes replayed exactly give the same fragments", "[fem-lite][cgal-clip]") {
   FractureParams params = downward_hit(Vec3(2, 0.25, 0.5), 8);
   const FemLiteFracturer fem(simply_supported(16));
