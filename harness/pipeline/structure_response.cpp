@@ -38,11 +38,7 @@ Status solve_structure_stress(RunState& run, bool after_hit, StageClocks& clocks
   for (std::size_t b = 0; b < r.broken.size(); ++b)
     if (p->result.bonds[b].broken) r.broken[b] = 1;
   r.stress_rounds += p->rounds;
-  r.solver.solves += p->report.solves;
-  r.solver.iterations += p->report.iterations;
-  r.solver.converged = r.solver.converged && p->report.converged;
-  r.solver.residual = std::max(r.solver.residual, p->report.residual);
-  r.solver.unknowns = std::max(r.solver.unknowns, p->report.unknowns);
+  add_solver_report(r.solver, p->report);
   r.stages.ran(Stage::stress);
   if (after_hit && !run.options.no_skip)
     r.stages.skipped(Stage::stress, "components no broken bond touched: not re-solved between rounds");

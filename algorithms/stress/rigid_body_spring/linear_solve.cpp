@@ -16,6 +16,9 @@ namespace shatter {
 
 namespace {
 
+/// Refinement steps with the residual in long double, at most, for a solve that missed its tolerance.
+constexpr int kExtendedSteps = 4;
+
 using SparseMatrix = Eigen::SparseMatrix<double>;
 using Vector = Eigen::VectorXd;
 
@@ -130,6 +133,30 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
       if (block.factor) add_direct_solution(block, r, u);
     }
   }
+  // Near a mechanism (a piece held by a sliver of a bond) the displacements are large and K u cancels f
+  // to within double's round-off of |K| |u|: the residual formed in double, and refinement from it,
+  // stall above the tolerance where u itself may be within it. A solve that missed its tolerance is
+  // refined further with residuals accumulated in long double (extended_residual), while each step
+  // lowers that residual (at most kExtendedSteps), and reports the residual of the u it keeps. A solve
+  // within its tolerance never comes here: its u and residual are as before, bit for bit.
+  if (!report.converged || !u.allFinite()) return report;
+  const double f_norm = f.norm();
+  if (!residual_norm) residual_norm = (f - sparse_product(k, u)).norm();  // as solve_linear forms it
+  if (!(f_norm > 0.0) || *residual_norm <= solve_tolerance(settings) * f_norm) return report;
+  ExtendedResidual best = extended_residual(k, f, u);
+  for (int step = 0; step < kExtendedSteps && best.norm > solve_tolerance(settings) * f_norm; ++step) {
+    Vector trial = u;
+    for (SolvedBlock& block : blocks) {
+      if (gather(best.r, block.unknowns).norm() <= negligible) continue;
+      try_factorize(k, position, settings, memory.analyses, block);
+      if (block.factor) add_direct_solution(block, best.r, trial);
+    }
+    ExtendedResidual next = extended_residual(k, f, trial);
+    if (!(next.norm < best.norm)) break;
+    u = std::move(trial);
+    best = std::move(next);
+  }
+  residual_norm = best.norm;
   return report;
 }
 

@@ -1,6 +1,8 @@
 #include "algorithms/stress/rigid_body_spring/sparse_product.h"
 
 #include <cassert>
+#include <cmath>
+#include <vector>
 
 namespace shatter {
 namespace {
@@ -31,6 +33,29 @@ Eigen::VectorXd sparse_residual(const Eigen::SparseMatrix<double>& k, const Eige
                                 const Eigen::VectorXd& u) {
   Eigen::VectorXd out = f;
   add_columns(k, u, -1.0, out);
+  return out;
+}
+
+ExtendedResidual extended_residual(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f,
+                                   const Eigen::VectorXd& u) {
+  assert(k.isCompressed() && k.cols() == u.size() && k.rows() == f.size());
+  std::vector<long double> r(f.data(), f.data() + f.size());
+  const int* outer = k.outerIndexPtr();
+  const int* inner = k.innerIndexPtr();
+  const double* value = k.valuePtr();
+  for (Eigen::Index j = 0; j < k.cols(); ++j) {
+    const long double uj = u[j];
+    for (int at = outer[j]; at < outer[j + 1]; ++at) r[static_cast<std::size_t>(inner[at])] -= value[at] * uj;
+  }
+  ExtendedResidual out;
+  out.r.resize(f.size());
+  long double squares = 0.0L;
+  for (Eigen::Index i = 0; i < f.size(); ++i) {
+    const long double ri = r[static_cast<std::size_t>(i)];
+    out.r[i] = static_cast<double>(ri);
+    squares += ri * ri;
+  }
+  out.norm = static_cast<double>(std::sqrt(squares));
   return out;
 }
 

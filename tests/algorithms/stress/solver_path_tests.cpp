@@ -247,3 +247,81 @@ TEST_CASE("rigid-body-spring: a 3D block (6 x 6 node blocks) matches SimplicialL
     CHECK(pa->result.falling_clusters == pb->result.falling_clusters);
   }
 }
+
+namespace {
+
+/// f - K u accumulated in long double, its norm: the test's own evaluation of a solve's residual.
+double long_double_residual(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f, const Eigen::VectorXd& u) {
+  std::vector<long double> r(f.data(), f.data() + f.size());
+  for (int j = 0; j < k.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(k, j); it; ++it)
+      r[static_cast<std::size_t>(it.row())] -= static_cast<long double>(it.value()) * u[j];
+  long double squares = 0.0L;
+  for (const long double x : r) squares += x * x;
+  return static_cast<double>(std::sqrt(squares));
+}
+
+}  // namespace
+
+TEST_CASE("rigid-body-spring: near a mechanism, converged means the residual evaluated in long double is within tolerance",
+          "[stress]") {
+  // A 6 x 6 wall whose top two rows hang from the rest by one bond, its area and moments scaled by
+  // `sliver`: the smaller the sliver, the larger the displacements under gravity, and the more K u
+  // cancels f below double's round-off of |K| |u|.
+  int extended_path = 0, refused = 0;
+  for (const double sliver : {1e-4, 1e-6, 1e-7, 1e-8}) {
+    SupportGraph g = block_wall(6, 6);
+    std::vector<std::uint8_t> include(g.bonds.size(), 1);
+    const std::vector<std::uint8_t> none(g.nodes.size(), 0);
+    bool kept = false;
+    for (std::size_t b = 0; b < g.bonds.size(); ++b) {
+      Bond& bond = g.bonds[b];
+      const bool across = (bond.a / 6 == 3 && bond.b / 6 == 4);  // between rows 3 and 4
+      if (!across) continue;
+      if (!kept) {
+        kept = true;
+        bond.area *= sliver;
+        bond.moment_1 *= sliver;
+        bond.moment_2 *= sliver;
+        bond.polar_moment *= sliver;
+      } else {
+        include[b] = 0;
+      }
+    }
+    REQUIRE(kept);
+    GraphStiffness stiffness(g, Material{});
+    stiffness.assemble(include, none);
+    const Eigen::SparseMatrix<double> k = stiffness.matrix();
+    const std::vector<double> loads = node_loads(g, Loads{}, Material{});
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(k.cols());
+    for (int v = 0; v < g.node_count(); ++v)
+      if (const int i = stiffness.first_unknown(v); i >= 0)
+        for (int q = 0; q < 6; ++q) f[i + q] = loads[6 * static_cast<std::size_t>(v) + static_cast<std::size_t>(q)];
+    SpringSolverSettings settings;
+    Eigen::SparseMatrix<double> taken = k;
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(k.cols());
+    SolverMemory memory;
+    const SolverReport report = solve_linear(std::move(taken), f, u, settings, memory);
+    // The residual in double formed either way the solver forms it (accumulated into f, or f minus
+    // the product K u), the larger of the two.
+    const Eigen::VectorXd accumulated = f - k * u;
+    const Eigen::VectorXd product = k * u;
+    const double in_double = std::max(accumulated.norm(), (f - product).norm()) / f.norm();
+    const double in_long_double = long_double_residual(k, f, u) / f.norm();
+    INFO("sliver " << sliver << ": reported " << report.residual << (report.converged ? " (converged)" : "")
+                   << ", in double " << in_double << ", in long double " << in_long_double << ", |u| " << u.norm());
+    // Converged exactly when the returned u's residual, evaluated without double's cancellation, is
+    // within the tolerance; a solve that met it in double reports that residual, any other the long
+    // double one.
+    CHECK(report.converged == (in_long_double <= solve_tolerance(settings)));
+    if (in_double <= solve_tolerance(settings)) {
+      CHECK((report.residual == accumulated.norm() / f.norm() || report.residual == (f - product).norm() / f.norm()));
+    } else {
+      CHECK(std::abs(report.residual - in_long_double) <= 1e-9 * in_long_double);
+      if (report.converged) ++extended_path;  // refined with long double residuals into the tolerance
+    }
+    if (!report.converged) ++refused;
+  }
+  CHECK(extended_path > 0);  // the 1e-7 sliver: 1.5e-6 in double, 7.9e-7 after the refinement
+  CHECK(refused > 0);        // the 1e-8 sliver: no double u is within the tolerance
+}
