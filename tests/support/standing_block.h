@@ -67,4 +67,25 @@ inline double largest_difference(const std::vector<Vec3>& a, const std::vector<V
   return d;
 }
 
+/// The checks of a setting that should make fewer pairs and the same contacts, after `steps` steps:
+/// `bullets` with Bullet's own setting, `changed` with the setting, `reordered` with Bullet's setting
+/// and the bodies added in reverse. Fewer pairs; after one step (before anything moved) the same
+/// touching pairs and contact points; positions no farther from Bullet's than twice the spread that
+/// the body order alone makes.
+inline void check_fewer_pairs_same_contacts(const SteppedBlock& bullets, const SteppedBlock& changed,
+                                            const SteppedBlock& reordered, int steps) {
+  const double by_setting = largest_difference(bullets.positions, changed.positions);
+  const double by_order = largest_difference(bullets.positions, reordered.positions);
+  INFO(steps << " steps: pairs with Bullet's setting " << bullets.pairs << ", with the change " << changed.pairs
+             << "; largest difference from the change " << by_setting << " m, from the order " << by_order << " m");
+  CHECK(changed.pairs < bullets.pairs);
+  if (steps == 1) {
+    REQUIRE(bullets.touching.size() > 100);  // the block stands in contact, not apart
+    CHECK(bullets.touching == changed.touching);
+    CHECK(bullets.touching == reordered.touching);
+  }
+  CHECK(by_setting <= 2.0 * by_order);
+  CHECK(by_order > 0.0);
+}
+
 }  // namespace shatter::test

@@ -14,6 +14,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <utility>
+#include <vector>
 
 using namespace shatter;
 using namespace shatter::fixtures;
@@ -31,6 +33,35 @@ std::vector<int> bonds_of_block_at(const SupportGraph& g, double x, double z) {
     if (d < best) best = d, target = v;
   }
   return g.node_bonds[static_cast<std::size_t>(target)];
+}
+
+/// The right-hand side of `stiffness`'s system (assembled from `g`) under gravity: each free node's
+/// six loads at its unknowns.
+Eigen::VectorXd gravity_loads(const SupportGraph& g, const GraphStiffness& stiffness) {
+  const std::vector<double> loads = node_loads(g, Loads{}, Material{});
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(stiffness.unknowns());
+  for (int v = 0; v < g.node_count(); ++v)
+    if (const int i = stiffness.first_unknown(v); i >= 0)
+      for (int q = 0; q < 6; ++q) f[i + q] = loads[6 * static_cast<std::size_t>(v) + static_cast<std::size_t>(q)];
+  return f;
+}
+
+/// A solve of K u = f from u = 0 with a fresh memory, `u` its solution.
+SolverReport solve_from_zero(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f,
+                             const SpringSolverSettings& settings, Eigen::VectorXd& u) {
+  Eigen::SparseMatrix<double> taken = k;
+  u = Eigen::VectorXd::Zero(k.cols());
+  SolverMemory memory;
+  return solve_linear(std::move(taken), f, u, settings, memory);
+}
+
+/// The relative residual of `u` formed in double either way the solver forms it: f - K u accumulated
+/// into f (the refinement's form, Eigen's for an assigned f - k * u), and f minus the product K u.
+std::pair<double, double> double_residuals(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f,
+                                           const Eigen::VectorXd& u) {
+  const Eigen::VectorXd accumulated = f - k * u;
+  const Eigen::VectorXd product = k * u;
+  return {accumulated.norm() / f.norm(), (f - product).norm() / f.norm()};
 }
 
 SpringSolverSettings reference_settings() {
@@ -183,24 +214,14 @@ TEST_CASE("rigid-body-spring: the reported residual is that of the returned disp
   const std::vector<std::uint8_t> all(g.bonds.size(), 1), none(g.nodes.size(), 0);
   stiffness.assemble(all, none);
   const Eigen::SparseMatrix<double> k = stiffness.matrix();
-  const std::vector<double> loads = node_loads(g, Loads{}, Material{});
-  Eigen::VectorXd f = Eigen::VectorXd::Zero(k.cols());
-  for (int v = 0; v < g.node_count(); ++v)
-    if (const int i = stiffness.first_unknown(v); i >= 0)
-      for (int q = 0; q < 6; ++q) f[i + q] = loads[6 * static_cast<std::size_t>(v) + static_cast<std::size_t>(q)];
+  const Eigen::VectorXd f = gravity_loads(g, stiffness);
   for (const int steps : {0, 1, 2, 5}) {
     INFO("refinement steps " << steps);
     SpringSolverSettings settings;
     settings.refinement_steps = steps;
-    Eigen::SparseMatrix<double> taken = k;
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(k.cols());
-    SolverMemory memory;
-    const SolverReport report = solve_linear(std::move(taken), f, u, settings, memory);
-    // The residual of this u formed either way the solver forms it: f - K u accumulated into f (the
-    // refinement's form, Eigen's for an assigned f - k * u), or f minus the product K u.
-    const Eigen::VectorXd accumulated = f - k * u;
-    const Eigen::VectorXd product = k * u;
-    const double a = accumulated.norm() / f.norm(), b = (f - product).norm() / f.norm();
+    Eigen::VectorXd u;
+    const SolverReport report = solve_from_zero(k, f, settings, u);
+    const auto [a, b] = double_residuals(k, f, u);
     INFO("reported " << report.residual << ", recomputed " << a << " and " << b);
     CHECK(report.residual > 0.0);
     CHECK((report.residual == a || report.residual == b));
@@ -292,21 +313,12 @@ TEST_CASE("rigid-body-spring: near a mechanism, converged means the residual eva
     GraphStiffness stiffness(g, Material{});
     stiffness.assemble(include, none);
     const Eigen::SparseMatrix<double> k = stiffness.matrix();
-    const std::vector<double> loads = node_loads(g, Loads{}, Material{});
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(k.cols());
-    for (int v = 0; v < g.node_count(); ++v)
-      if (const int i = stiffness.first_unknown(v); i >= 0)
-        for (int q = 0; q < 6; ++q) f[i + q] = loads[6 * static_cast<std::size_t>(v) + static_cast<std::size_t>(q)];
-    SpringSolverSettings settings;
-    Eigen::SparseMatrix<double> taken = k;
-    Eigen::VectorXd u = Eigen::VectorXd::Zero(k.cols());
-    SolverMemory memory;
-    const SolverReport report = solve_linear(std::move(taken), f, u, settings, memory);
-    // The residual in double formed either way the solver forms it (accumulated into f, or f minus
-    // the product K u), the larger of the two.
-    const Eigen::VectorXd accumulated = f - k * u;
-    const Eigen::VectorXd product = k * u;
-    const double in_double = std::max(accumulated.norm(), (f - product).norm()) / f.norm();
+    const Eigen::VectorXd f = gravity_loads(g, stiffness);
+    const SpringSolverSettings settings;
+    Eigen::VectorXd u;
+    const SolverReport report = solve_from_zero(k, f, settings, u);
+    const auto [accumulated, product] = double_residuals(k, f, u);
+    const double in_double = std::max(accumulated, product);  // either way the solver forms it
     const double in_long_double = long_double_residual(k, f, u) / f.norm();
     INFO("sliver " << sliver << ": reported " << report.residual << (report.converged ? " (converged)" : "")
                    << ", in double " << in_double << ", in long double " << in_long_double << ", |u| " << u.norm());
@@ -315,7 +327,7 @@ TEST_CASE("rigid-body-spring: near a mechanism, converged means the residual eva
     // double one.
     CHECK(report.converged == (in_long_double <= solve_tolerance(settings)));
     if (in_double <= solve_tolerance(settings)) {
-      CHECK((report.residual == accumulated.norm() / f.norm() || report.residual == (f - product).norm() / f.norm()));
+      CHECK((report.residual == accumulated || report.residual == product));
     } else {
       CHECK(std::abs(report.residual - in_long_double) <= 1e-9 * in_long_double);
       if (report.converged) ++extended_path;  // refined with long double residuals into the tolerance

@@ -12,8 +12,6 @@
 
 using shatter::Fragment;
 using shatter::PhysicsSettings;
-using shatter::test::SteppedBlock;
-using shatter::test::largest_difference;
 using shatter::test::stand_block;
 
 TEST_CASE("tight hull: the box holds every point plus the margin and touches the extreme ones", "[physics]") {
@@ -66,20 +64,8 @@ TEST_CASE("tight hull: fewer pairs, the same contacts, trajectories as close as 
   PhysicsSettings tight_boxes;
   tight_boxes.tight_bounds = true;
   for (const int steps : {1, 30}) {
-    const SteppedBlock loose = stand_block(slabs, loose_boxes, false, steps);
-    const SteppedBlock tight = stand_block(slabs, tight_boxes, false, steps);
-    const SteppedBlock reordered = stand_block(slabs, loose_boxes, true, steps);
-    const double by_boxes = largest_difference(loose.positions, tight.positions);
-    const double by_order = largest_difference(loose.positions, reordered.positions);
-    INFO(steps << " steps: pairs with Bullet's boxes " << loose.pairs << ", with exact boxes " << tight.pairs
-               << "; largest difference from the boxes " << by_boxes << " m, from the order " << by_order << " m");
-    CHECK(tight.pairs < loose.pairs);
-    if (steps == 1) {
-      REQUIRE(loose.touching.size() > 100);  // the block stands in contact, not apart
-      CHECK(loose.touching == tight.touching);
-      CHECK(loose.touching == reordered.touching);
-    }
-    CHECK(by_boxes <= 2.0 * by_order);
-    CHECK(by_order > 0.0);
+    shatter::test::check_fewer_pairs_same_contacts(stand_block(slabs, loose_boxes, false, steps),
+                                                   stand_block(slabs, tight_boxes, false, steps),
+                                                   stand_block(slabs, loose_boxes, true, steps), steps);
   }
 }
