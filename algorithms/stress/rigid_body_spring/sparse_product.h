@@ -21,10 +21,10 @@ Eigen::VectorXd sparse_product(const Eigen::SparseMatrix<double>& k, const Eigen
 Eigen::VectorXd sparse_residual(const Eigen::SparseMatrix<double>& k, const Eigen::VectorXd& f,
                                 const Eigen::VectorXd& u);
 
-/// f - K u with every entry accumulated in long double (an 80-bit format with a 64-bit significand on
-/// x86-64; double elsewhere), then rounded to double, and its norm taken in long double: the residual of
-/// a u whose K u cancels f to within double's round-off of |K| |u| (a structure near a mechanism), which
-/// the double `sparse_residual` cannot resolve.
+/// f - K u with every entry accumulated in long double (on x86-64 an 80-bit format with a 64-bit
+/// significand; elsewhere the platform's, at least double), then rounded to double, and its norm taken
+/// in long double: the residual of a u whose K u cancels f to within double's round-off of |K| |u| (a
+/// structure near a mechanism), which the double `sparse_residual` cannot resolve.
 struct ExtendedResidual {
   Eigen::VectorXd r;  ///< f - K u, each entry rounded to double
   double norm = 0.0;  ///< |f - K u|, 2-norm
