@@ -90,8 +90,10 @@ void check_runtime_inputs(RunState& run) {
 /// Contact manifolds for the world to allocate up front (PhysicsSettings::contact_pool_size): Bullet
 /// keeps one per overlapping pair of bounding boxes, and the pairs peak when an event's pieces enter
 /// the world. Fresh pieces of a slab-like solid overlap many neighbours' boxes (the tower's 412 bodies
-/// at 100 x 25 made 24,500 pairs), so 64 per body expected at the peak: every fragment, plus the
-/// runtime pieces of each fragment an impact reaches. Between Bullet's default and 65,536 (70 MB).
+/// at 100 x 25 made 24,500 pairs with Bullet's 0.05 m growth of the tree's boxes, fewer with the
+/// world's 0.01 m: PhysicsSettings::broadphase_margin), so 64 per body expected at the peak: every
+/// fragment, plus the runtime pieces of each fragment an impact reaches. Between Bullet's default and
+/// 65,536 (70 MB).
 int contact_pool_size(const RunState& run) {
   const std::vector<Fragment>& fragments = run.result.fragments;
   long bodies = static_cast<long>(fragments.size());
