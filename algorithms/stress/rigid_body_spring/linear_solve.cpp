@@ -142,9 +142,10 @@ SolverReport solve_blocks(const SparseMatrix& k, const Vector& f, Vector& u, con
   if (!report.converged || !u.allFinite()) return report;
   const double f_norm = f.norm();
   if (!residual_norm) residual_norm = (f - sparse_product(k, u)).norm();  // as solve_linear forms it
-  if (!(f_norm > 0.0) || *residual_norm <= solve_tolerance(settings) * f_norm) return report;
+  const double within = solve_tolerance(settings) * f_norm;  // the largest residual norm converged
+  if (!(f_norm > 0.0) || *residual_norm <= within) return report;
   ExtendedResidual best = extended_residual(k, f, u);
-  for (int step = 0; step < kExtendedSteps && best.norm > solve_tolerance(settings) * f_norm; ++step) {
+  for (int step = 0; step < kExtendedSteps && best.norm > within; ++step) {
     Vector trial = u;
     for (SolvedBlock& block : blocks) {
       if (gather(best.r, block.unknowns).norm() <= negligible) continue;

@@ -75,14 +75,17 @@ struct OwnsManifoldOf {
 template struct PrivateMember<ManifoldPtrOf, &btConvexConvexAlgorithm::m_manifoldPtr>;
 template struct PrivateMember<OwnsManifoldOf, &btConvexConvexAlgorithm::m_ownManifold>;
 
-/// Makes `algorithm`'s manifold for `a` and `b`, owned by the algorithm, as Bullet's test does when it
-/// has none.
-void give_manifold(btConvexConvexAlgorithm& algorithm, btDispatcher& dispatcher, const btCollisionObject* a,
-                   const btCollisionObject* b) {
-  if (algorithm.getManifold() != nullptr) return;
-  algorithm.*member_of(ManifoldPtrOf{}) = dispatcher.getNewManifold(a, b);
-  algorithm.*member_of(OwnsManifoldOf{}) = true;
+}  // namespace
+
+void make_hull_pair_manifold(btCollisionAlgorithm& algorithm, btDispatcher& dispatcher, const btCollisionObject* a,
+                             const btCollisionObject* b) {
+  auto& convex = static_cast<btConvexConvexAlgorithm&>(algorithm);
+  if (convex.getManifold() != nullptr) return;
+  convex.*member_of(ManifoldPtrOf{}) = dispatcher.getNewManifold(a, b);
+  convex.*member_of(OwnsManifoldOf{}) = true;
 }
+
+namespace {
 
 class HullPairAlgorithm final : public btConvexConvexAlgorithm {
  public:
@@ -99,7 +102,7 @@ class HullPairAlgorithm final : public btConvexConvexAlgorithm {
     const bool first = !tested_;
     tested_ = true;
     // What Bullet's test does first: make the pair's manifold (unless the dispatcher made it already).
-    give_manifold(*this, *m_dispatcher, w0->getCollisionObject(), w1->getCollisionObject());
+    make_hull_pair_manifold(*this, *m_dispatcher, w0->getCollisionObject(), w1->getCollisionObject());
     auto* manifold = const_cast<btPersistentManifold*>(getManifold());
     // A pair with contact points is near. On a first test only the centres' line is tried: a new pair
     // it does not separate often touches (an event's pieces start side by side), and then a GJK probe
@@ -187,11 +190,6 @@ struct HullPairCollision::CreateFunc final : btCollisionAlgorithmCreateFunc {
     return new (memory) HullPairAlgorithm(ci, w0, w1, *bullet, counts);
   }
 };
-
-void make_hull_pair_manifold(btCollisionAlgorithm& algorithm, btCollisionDispatcher& dispatcher,
-                             const btCollisionObject* a, const btCollisionObject* b) {
-  give_manifold(static_cast<btConvexConvexAlgorithm&>(algorithm), dispatcher, a, b);
-}
 
 HullPairCollision::HullPairCollision() : create_(new CreateFunc) {}
 

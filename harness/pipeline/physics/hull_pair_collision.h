@@ -18,6 +18,7 @@
 class btCollisionAlgorithm;
 class btCollisionDispatcher;
 class btCollisionObject;
+class btDispatcher;
 
 namespace shatter {
 
@@ -33,8 +34,8 @@ struct HullPairCounts {
 /// is Bullet's convex-convex one or this test's, as the pair's first test would make it first thing,
 /// and hands it to the algorithm: the first test itself can then run apart from the dispatcher's pools
 /// (narrow_phase_dispatcher.h). Nothing when the algorithm has its manifold.
-void make_hull_pair_manifold(btCollisionAlgorithm& algorithm, btCollisionDispatcher& dispatcher,
-                             const btCollisionObject* a, const btCollisionObject* b);
+void make_hull_pair_manifold(btCollisionAlgorithm& algorithm, btDispatcher& dispatcher, const btCollisionObject* a,
+                             const btCollisionObject* b);
 
 /// The hull-hull pair test with kept separating axes, registered with a dispatcher for pairs of
 /// btConvexHullShape (the children of compound shapes included). Owns what the registration points to;
