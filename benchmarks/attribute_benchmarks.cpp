@@ -93,7 +93,7 @@ void fracture_pair(benchmark::State& state, const Registries& registries, const 
 /// copied once into a new array (every fragment face's values are written once; a fracture adds cut
 /// faces to that). Compared with a geometry row it bounds the attributes' cost ratio from below.
 void output_floor(benchmark::State& state, const Mesh& mesh) {
-  const std::vector<double>& values = mesh.attributes.corners;
+  const CornerValues& values = mesh.attributes.corners;
   for (auto _ : state) {
     std::vector<double> copy(values.begin(), values.end());
     benchmark::DoNotOptimize(copy.data());

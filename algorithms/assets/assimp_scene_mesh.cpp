@@ -151,7 +151,7 @@ Result<Mesh> mesh_from_assimp_scene(const aiScene& scene, const std::string& nam
   mesh.triangles.reserve(static_cast<std::size_t>(triangles));
   mesh.attributes.corners.reserve(static_cast<std::size_t>(triangles) * 3 * static_cast<std::size_t>(layout.stride()));
   SlotMaker slots(scene);
-  std::vector<double>& corners = mesh.attributes.corners;
+  CornerValues& corners = mesh.attributes.corners;
   for (std::size_t m = 0; m < instances.size(); ++m) {
     const aiMesh& in = *instances[m].mesh;
     const Eigen::Matrix4d& t = instances[m].transform;

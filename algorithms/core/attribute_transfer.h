@@ -150,6 +150,22 @@ Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValue
 /// True when each of the `count` values at `values` is finite (one branch-free pass).
 [[nodiscard]] bool all_finite(const double* values, std::size_t count);
 
+/// Whether every value passed to it was finite, tallied as values are written (so a writer checks
+/// its output without reading it again): v - v is 0 for a finite v and NaN otherwise, summed in 8
+/// independent lanes that the compiler vectorises.
+class FiniteTally {
+ public:
+  /// Copies `count` values from `from` to `to` (not overlapping) and tallies them.
+  void copy(const double* from, std::size_t count, double* to);
+  /// Tallies `count` values.
+  void add(const double* values, std::size_t count);
+  /// True when every value tallied so far was finite.
+  [[nodiscard]] bool all_finite() const;
+
+ private:
+  std::array<double, 8> lanes_{};
+};
+
 /// True when every corner value a fracture of `solid` can make is finite, decided from two bounds on
 /// the solid alone (one pass over its values, one over its positions), so that the fracture need not
 /// look at its output: its values are each within a quarter of the largest double, and its largest
@@ -160,6 +176,11 @@ Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValue
 /// product with a unit vector over the scale, every position lying in the solid's bounding box
 /// (|u| <= 3 (1 + eps) max|coordinate| / scale). False for a value that is not finite.
 [[nodiscard]] bool fracture_attributes_bounded(const Mesh& solid);
+
+/// The second of fracture_attributes_bounded's bounds, on the positions only (one pass over them):
+/// true when every cut-face value a fracture of `solid` can make is finite (its largest coordinate
+/// over its cut-face UV scale within a sixteenth of the largest double).
+[[nodiscard]] bool cut_face_values_bounded(const Mesh& solid);
 
 /// Why a fracture refuses when its output has a corner value that is not finite although the solid's
 /// values are finite: a weighted sum of values near the largest double, or a cut face's UV of a

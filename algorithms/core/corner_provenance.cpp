@@ -10,7 +10,7 @@ CornerProvenance::CornerProvenance(const Mesh& solid, std::string who)
     : solid_(solid),
       who_(std::move(who)),
       solid_faces_(static_cast<std::int32_t>(solid.triangles.size())),
-      outputs_bounded_(fracture_attributes_bounded(solid)) {}
+      caps_bounded_(cut_face_values_bounded(solid)) {}
 
 Mesh CornerProvenance::tracked() const {
   Mesh piece;
@@ -82,16 +82,17 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
     out.tags = std::move(piece.tags);
     return out;
   }
-  // Every face's values appended in order to one array reserved once: a run of whole faces in one
-  // copy, a run of cap and cut faces written in place after one resize (its zeroing costs less than
-  // a copy of each face from a buffer; the whole faces' values, most of a large piece's, are written
-  // once).
-  std::vector<double>& corners = attr.corners;
+  // Every face's values appended in order to one array reserved once, each run of faces written in
+  // place after one resize (which does not zero: CornerValues) and each value tallied as it is written
+  // (FiniteTally): a run of whole faces is one copy, the whole faces' values (most of a large piece's)
+  // are read once and written once, and no value is read again to be checked.
+  CornerValues& corners = attr.corners;
   corners.reserve(faces * face_values);
   const double* solid_values = solid_.attributes.corners.data();
   const auto whole = [&](std::size_t face) {
     return records[face] >= 0 && records[face] < solid_faces_;
   };
+  FiniteTally tally;
   std::size_t f = 0;
   while (f < faces) {
     const std::int32_t record = records[f];
@@ -103,8 +104,9 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
              record + static_cast<std::int32_t>(run) < solid_faces_)
         ++run;
       const auto source = static_cast<std::size_t>(record);
-      const double* from = solid_values + source * face_values;
-      corners.insert(corners.end(), from, from + run * face_values);
+      const std::size_t at = corners.size();
+      corners.resize(at + run * face_values);
+      tally.copy(solid_values + source * face_values, run * face_values, corners.data() + at);
       if (materials)
         std::copy_n(solid_.attributes.materials.begin() + static_cast<std::ptrdiff_t>(source), run,
                     attr.materials.begin() + static_cast<std::ptrdiff_t>(f));
@@ -122,6 +124,7 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
         cap_dressings_[static_cast<std::size_t>(-r - 1)].write(
             piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
             piece.vertices[static_cast<std::size_t>(t[2])], out_values);
+        if (!caps_bounded_) tally.add(out_values, face_values);
         if (materials) attr.materials[f] = attr.cut.material;
         continue;
       }
@@ -136,12 +139,11 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
         double* corner = out_values + k * stride;
         for (std::size_t i = 0; i < stride; ++i) corner[i] = w[0] * a[i] + w[1] * b[i] + w[2] * c[i];
       }
+      tally.add(out_values, face_values);
       if (materials) attr.materials[f] = solid_.attributes.materials[source];
     }
   }
-  // Unless the solid's bounds rule out a value that is not finite (fracture_attributes_bounded), one
-  // pass over the piece's values while they are still in cache.
-  if (!outputs_bounded_ && !all_finite(corners.data(), corners.size())) {
+  if (!tally.all_finite()) {
     // The offending solid triangle, found only now; otherwise a weighted sum of values near the largest
     // doubles, or a cut face's UV of a position far out against a tiny UV scale, overflowed.
     if (Status s = check_attributes(solid_, who_); !s) return s.error();

@@ -46,9 +46,10 @@ class CornerProvenance {
   std::int32_t cap(const Vec3& outward_normal);
 
   /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated. No value
-  /// that is not finite is returned (the solid's values are read here, so a fracture that tracks them
-  /// need not check them first: check_attributes' AttributeValues::at_use); an Error names the first
-  /// solid triangle with a value that is not finite.
+  /// that is not finite is returned: each is checked as it is written (the solid's values are read
+  /// here, so a fracture that tracks them need not check them first: check_attributes'
+  /// AttributeValues::at_use); an Error names the first solid triangle with a value that is not
+  /// finite, or says that a value overflowed.
   [[nodiscard]] Result<Mesh> resolve(Mesh&& piece) const;
 
   /// True when `record` names a cap.
@@ -63,9 +64,9 @@ class CornerProvenance {
   const Mesh& solid_;
   std::string who_;  // names the fracture in resolve's error
   std::int32_t solid_faces_;
-  // True when every value resolve can write is finite, decided from the solid alone
-  // (fracture_attributes_bounded); otherwise resolve checks what it writes.
-  bool outputs_bounded_;
+  // True when no cap value resolve writes can overflow, decided from the solid's positions
+  // (cut_face_values_bounded); otherwise resolve checks the caps' values too.
+  bool caps_bounded_;
   std::vector<Cut> cuts_;          // record solid_faces_ + i
   std::vector<PlanarDressing> cap_dressings_;  // record -(i + 1): its cut-face dressing
 };

@@ -11,6 +11,8 @@
 /// a fragment's surface reproduces the input's interpolated attributes to round-off. A mesh without
 /// attributes has every array here empty and pays no attribute work anywhere.
 
+#include "algorithms/core/default_init_allocator.h"
+
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -68,11 +70,15 @@ struct CutFaceStyle {
   bool operator==(const CutFaceStyle&) const = default;
 };
 
+/// Corner values: a std::vector<double> whose `resize` does not zero what it adds
+/// (default_init_allocator.h: whoever grows it writes every new value).
+using CornerValues = std::vector<double, DefaultInitAllocator<double>>;
+
 /// The attributes of a mesh. Invariants (check_attributes): `corners.size() == 3 #F stride`;
 /// `materials` is empty when `slots` is, and otherwise holds #F indices into `slots`.
 struct MeshAttributes {
   AttributeLayout layout;               ///< channels per corner
-  std::vector<double> corners;          ///< corner k of triangle f at [(3 f + k) stride, (3 f + k + 1) stride)
+  CornerValues corners;                 ///< corner k of triangle f at [(3 f + k) stride, (3 f + k + 1) stride)
   std::vector<std::int32_t> materials;  ///< #F material slots, or empty
   std::vector<MaterialSlot> slots;      ///< the materials, or empty
   CutFaceStyle cut;                     ///< how cut faces are dressed

@@ -318,7 +318,7 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
       if (stride == 0) continue;
       for (const std::int32_t v : t) {
         const std::size_t c = first + static_cast<std::size_t>(std::find(poly.begin(), poly.end(), v) - poly.begin());
-        std::vector<double>& out = mesh.attributes.corners;
+        CornerValues& out = mesh.attributes.corners;
         if (layout.normals) {
           const Vec3& n = normals[static_cast<std::size_t>(faces.normals[c])];
           out.insert(out.end(), {n.x(), n.y(), n.z()});

@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <vector>
 
 using namespace shatter;
 
@@ -214,6 +215,47 @@ TEST_CASE("attributes: a fracture's values are bounded by the solid's when its v
   CHECK(fracture_attributes_bounded(m));
   m.attributes.cut.uv_scale = 1e-310;
   CHECK_FALSE(fracture_attributes_bounded(m));
+  // The positions' bound alone: the same answers for the scale, whatever the values.
+  m.attributes.corners[4] = std::nan("");
+  CHECK_FALSE(cut_face_values_bounded(m));
+  m.attributes.cut.uv_scale = 0.5 / (largest / 16.0);
+  CHECK(cut_face_values_bounded(m));
+}
+
+TEST_CASE("attributes: a finite tally copies every value exactly and finds one that is not finite anywhere",
+          "[attributes]") {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  // Lengths around the 8 lanes and the vector widths, each offender at every position.
+  for (std::size_t count = 0; count <= 41; ++count) {
+    std::vector<double> from(count);
+    for (std::size_t i = 0; i < count; ++i)  // magnitudes from 2^-800 to 2^840, both signs
+      from[i] = (i % 3 == 0 ? -1.0 : 1.0) * std::ldexp(1.0 + 0.1 * static_cast<double>(i), 40 * static_cast<int>(i) - 800);
+    from.push_back(std::numeric_limits<double>::max());  // the largest finite value, in every copy
+    const std::size_t n = from.size();
+    FiniteTally clean;
+    std::vector<double> to(n, 0.0);
+    clean.copy(from.data(), n, to.data());
+    CHECK(to == from);
+    CHECK(clean.all_finite());
+    FiniteTally added;
+    added.add(from.data(), n);
+    CHECK(added.all_finite());
+    for (std::size_t at = 0; at < n; ++at)
+      for (const double bad : {inf, -inf, std::nan("")}) {
+        std::vector<double> values = from;
+        values[at] = bad;
+        FiniteTally copied;
+        copied.copy(values.data(), n, to.data());
+        CHECK_FALSE(copied.all_finite());
+        CHECK((std::isnan(bad) ? std::isnan(to[at]) : to[at] == bad));
+        FiniteTally tallied;
+        tallied.add(values.data(), n);
+        CHECK_FALSE(tallied.all_finite());
+        // A tally stays failed whatever comes after.
+        copied.copy(from.data(), n, to.data());
+        CHECK_FALSE(copied.all_finite());
+      }
+  }
 }
 
 TEST_CASE("attributes: box mapping gives face normals, UVs of right and up over the scale, and a tangent along +u",
