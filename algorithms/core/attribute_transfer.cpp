@@ -396,10 +396,12 @@ __attribute__((target_clones("avx2", "default"))) void FiniteTally::copy(const d
 }
 
 void FiniteTally::add(const double* values, std::size_t count) {
+  std::array<double, 8> lanes = lanes_;
   std::size_t i = 0;
   for (; i + 8 <= count; i += 8)
-    for (std::size_t k = 0; k < 8; ++k) lanes_[k] += values[i + k] - values[i + k];
-  for (; i < count; ++i) lanes_[0] += values[i] - values[i];
+    for (std::size_t k = 0; k < 8; ++k) lanes[k] += values[i + k] - values[i + k];
+  for (; i < count; ++i) lanes[0] += values[i] - values[i];
+  lanes_ = lanes;
 }
 
 bool FiniteTally::all_finite() const {
