@@ -17,10 +17,8 @@ Mesh CornerProvenance::tracked() const {
   piece.vertices = solid_.vertices;
   piece.triangles = solid_.triangles;
   piece.tags = solid_.tags;
-  // No corner values and one placeholder slot: every routine that passes faces on (attribute_transfer.h)
-  // then carries the per-face entry, which holds the record, and nothing else.
-  piece.attributes.slots.resize(1);
-  piece.attributes.slots[0].name = "record";
+  // No corner values and no material slot, only the per-face entries, which hold the records: every
+  // routine that passes faces on (attribute_transfer.h) carries them and nothing else.
   piece.attributes.materials.resize(solid_.triangles.size());
   std::iota(piece.attributes.materials.begin(), piece.attributes.materials.end(), 0);
   return piece;

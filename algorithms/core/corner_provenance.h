@@ -6,7 +6,8 @@
 /// Design note: copying every face's corner values (a textured asset: 9 doubles a corner) through
 /// each level of a recursive cut costs as much as the geometry itself, although most faces are only
 /// passed on whole. A tracked piece is an ordinary mesh whose per-face material entry names a record
-/// instead of a material slot; its layout has no corner values, so passing a face on copies one int.
+/// instead of a material slot; it has no corner values and no slots (per-face entries alone make its
+/// attributes non-empty), so passing a face on copies one int and a new piece copies no slot.
 /// A record is one of three kinds:
 ///   - 0..F-1: face r of the solid, its corners as they are;
 ///   - F..: a face cut from solid face `face`, each corner a barycentric weight triple over that

@@ -84,7 +84,7 @@ struct MeshAttributes {
   CutFaceStyle cut;                     ///< how cut faces are dressed
 
   /// True when the mesh carries no attribute at all (then every fracture stays geometry only).
-  [[nodiscard]] bool empty() const { return layout.empty() && slots.empty(); }
+  [[nodiscard]] bool empty() const { return layout.empty() && slots.empty() && materials.empty(); }
   /// Values of corner `k` of triangle `f`.
   [[nodiscard]] const double* corner(std::size_t f, int k) const {
     return corners.data() + (3 * f + static_cast<std::size_t>(k)) * static_cast<std::size_t>(layout.stride());
