@@ -188,6 +188,11 @@ TEST_CASE("attributes: inconsistent attributes are refused with the triangle nam
   m = good;
   m.attributes.layout.normals = false;
   CHECK_FALSE(check_attributes(m, "m").ok());
+  // Per-face entries without slots are attributes (not an empty set), and not valid ones.
+  Mesh entries_only = make_box(Vec3(1, 1, 1));
+  entries_only.attributes.materials.assign(entries_only.triangles.size(), 0);
+  CHECK_FALSE(entries_only.attributes.empty());
+  CHECK_FALSE(check_attributes(entries_only, "m").ok());
   // A mesh without attributes has nothing to check, and readying it adds nothing.
   Mesh plain = make_box(Vec3(1, 1, 1));
   prepare_cut_faces(plain);
