@@ -349,11 +349,13 @@ Status check_attributes(const Mesh& mesh, const std::string& who, AttributeValue
 
 namespace {
 
-/// True when `factor` v is finite for each of the `count` values v at `values`: factor v - factor v is 0
-/// for a finite product and NaN otherwise, summed in 8 independent lanes (no reassociation needed, so
-/// the compiler vectorises them).
-bool all_finite_scaled(const double* values, std::size_t count, double factor) {
-  std::array<double, 8> lanes{};
+using Lanes = std::array<double, 8>;
+
+/// `lanes` with factor v - factor v added for each of the `count` values v at `values`: 0 for a finite
+/// product and NaN otherwise, summed in 8 independent lanes (no reassociation needed, so the compiler
+/// vectorises them). The lanes come and go by value: `values` cannot alias them, so they stay in
+/// registers.
+Lanes tally_scaled(Lanes lanes, const double* values, std::size_t count, double factor) {
   std::size_t i = 0;
   for (; i + 8 <= count; i += 8)
     for (std::size_t k = 0; k < 8; ++k) {
@@ -364,6 +366,11 @@ bool all_finite_scaled(const double* values, std::size_t count, double factor) {
     const double w = factor * values[i];
     lanes[0] += w - w;
   }
+  return lanes;
+}
+
+/// True when every lane is 0 (every value tallied was finite).
+bool all_zero(const Lanes& lanes) {
   return std::all_of(lanes.begin(), lanes.end(), [](double lane) { return lane == 0.0; });
 }
 
@@ -371,7 +378,7 @@ bool all_finite_scaled(const double* values, std::size_t count, double factor) {
 
 bool all_finite(const double* values, std::size_t count) {
   // The first offender is sought only on failure (check_attributes).
-  return all_finite_scaled(values, count, 1.0);
+  return all_zero(tally_scaled(Lanes{}, values, count, 1.0));
 }
 
 // A copy of a large piece's values (a megabyte for a mesh of 5,000 textured triangles) is bound by
@@ -380,7 +387,7 @@ bool all_finite(const double* values, std::size_t count) {
 __attribute__((target_clones("avx2", "default"))) void FiniteTally::copy(const double* from, std::size_t count,
                                                                         double* to) {
   // The lanes in locals: `to` may not alias them, so they stay in registers.
-  std::array<double, 8> lanes = lanes_;
+  Lanes lanes = lanes_;
   std::size_t i = 0;
   for (; i + 8 <= count; i += 8)
     for (std::size_t k = 0; k < 8; ++k) {
@@ -395,23 +402,14 @@ __attribute__((target_clones("avx2", "default"))) void FiniteTally::copy(const d
   lanes_ = lanes;
 }
 
-void FiniteTally::add(const double* values, std::size_t count) {
-  std::array<double, 8> lanes = lanes_;
-  std::size_t i = 0;
-  for (; i + 8 <= count; i += 8)
-    for (std::size_t k = 0; k < 8; ++k) lanes[k] += values[i + k] - values[i + k];
-  for (; i < count; ++i) lanes[0] += values[i] - values[i];
-  lanes_ = lanes;
-}
+void FiniteTally::add(const double* values, std::size_t count) { lanes_ = tally_scaled(lanes_, values, count, 1.0); }
 
-bool FiniteTally::all_finite() const {
-  return std::all_of(lanes_.begin(), lanes_.end(), [](double lane) { return lane == 0.0; });
-}
+bool FiniteTally::all_finite() const { return all_zero(lanes_); }
 
 bool fracture_attributes_bounded(const Mesh& solid) {
   // 4 v is exact unless it overflows, which it does exactly when |v| > largest / 4 (or v is not finite).
   const MeshAttributes& attr = solid.attributes;
-  if (!all_finite_scaled(attr.corners.data(), attr.corners.size(), 4.0)) return false;
+  if (!all_zero(tally_scaled(Lanes{}, attr.corners.data(), attr.corners.size(), 4.0))) return false;
   return attr.layout.empty() || cut_face_values_bounded(solid);
 }
 
