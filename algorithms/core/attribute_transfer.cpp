@@ -382,10 +382,18 @@ bool all_finite(const double* values, std::size_t count) {
 }
 
 // A copy of a large piece's values (a megabyte for a mesh of 5,000 textured triangles) is bound by
-// how many loads, stores and adds issue per cycle: built twice, for AVX2 (32-byte vectors) and for the
-// baseline (SSE2, 16 bytes), and the one the processor supports chosen when the program loads.
-__attribute__((target_clones("avx2", "default"))) void FiniteTally::copy(const double* from, std::size_t count,
-                                                                        double* to) {
+// how many loads, stores and adds issue per cycle: on x86-64 with GCC it is built twice, for AVX2
+// (32-byte vectors) and for the baseline (SSE2, 16 bytes), and the one the processor supports is chosen
+// when the program loads. Elsewhere it is built once for the target: Debian's clang (14) names the
+// function chosen at load "copy.ifunc", not as declared, so a caller in another file (the fuzzers'
+// clang build) would not link.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define SHATTER_AVX2_AND_BASELINE __attribute__((target_clones("avx2", "default")))
+#else
+#define SHATTER_AVX2_AND_BASELINE
+#endif
+
+SHATTER_AVX2_AND_BASELINE void FiniteTally::copy(const double* from, std::size_t count, double* to) {
   // The lanes in locals: `to` may not alias them, so they stay in registers.
   Lanes lanes = lanes_;
   std::size_t i = 0;
