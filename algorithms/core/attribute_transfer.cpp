@@ -115,6 +115,23 @@ void PlanarDressing::write(const Vec3& a, const Vec3& b, const Vec3& c, double* 
   }
 }
 
+void PlanarDressing::write_faces(const Mesh& mesh, std::size_t first, std::size_t count, double* out) const {
+  const auto face_values = 3 * static_cast<std::size_t>(stride_);
+  for (std::size_t f = first; f < first + count; ++f, out += face_values) {
+    const Triangle& t = mesh.triangles[f];
+    write(mesh.vertices[static_cast<std::size_t>(t[0])], mesh.vertices[static_cast<std::size_t>(t[1])],
+          mesh.vertices[static_cast<std::size_t>(t[2])], out);
+  }
+}
+
+PlanarDressing PlanarDressing::reversed() const {
+  PlanarDressing other = *this;
+  if (normals_)
+    for (int i = 0; i < 3; ++i) other.fixed_[static_cast<std::size_t>(AttributeLayout::normal_offset() + i)] *= -1.0;
+  if (tangents_) other.fixed_[static_cast<std::size_t>(tangent_offset_ + 3)] *= -1.0;
+  return other;
+}
+
 void write_planar_corners(const AttributeLayout& layout, const Vec3& normal, const std::array<Vec3, 3>& p, double scale,
                           double* out) {
   PlanarDressing(layout, normal, scale).write(p[0], p[1], p[2], out);

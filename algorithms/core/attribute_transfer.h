@@ -79,6 +79,15 @@ class PlanarDressing {
   /// Writes to `out` (3 x stride values) the corners of the face with positions `a`, `b`, `c`.
   void write(const Vec3& a, const Vec3& b, const Vec3& c, double* out) const;
 
+  /// Writes to `out` (3 x stride values a face) the corners of faces [first, first + count) of `mesh`,
+  /// as write does face by face.
+  void write_faces(const Mesh& mesh, std::size_t first, std::size_t count, double* out) const;
+
+  /// The dressing of the faces with the opposite normal (the crack's other face): the same plane basis
+  /// (cut_plane_basis), the normal and the tangent's handedness negated. Equal, value for value, to
+  /// the dressing built for the negated normal (negation and normalisation commute exactly).
+  [[nodiscard]] PlanarDressing reversed() const;
+
  private:
   std::array<double, kMaxCornerValues> fixed_{};  // one corner's normal and tangent at their offsets
   Vec3 e1_ = Vec3::UnitX();                 // the plane's basis (cut_plane_basis)

@@ -25,21 +25,35 @@ Mesh CornerProvenance::tracked() const {
 }
 
 std::int32_t CornerProvenance::mixed(std::int32_t parent, const std::array<CornerMix, 3>& mix) {
-  // The new record is written in place: room is made first, so `from` (which may point into the
-  // records) stays valid.
+  // The new record is written in place: room is made first, so the parent's record (which may be one
+  // of them) stays where it is.
   if (cuts_.size() == cuts_.capacity()) cuts_.reserve(2 * cuts_.size() + 64);
-  static constexpr std::array<CornerWeights, 3> whole_face{CornerWeights{1.0, 0.0, 0.0}, CornerWeights{0.0, 1.0, 0.0},
-                                                           CornerWeights{0.0, 0.0, 1.0}};
-  const bool cut_before = parent >= solid_faces_;
-  const Cut* parent_cut = cut_before ? &cuts_[static_cast<std::size_t>(parent - solid_faces_)] : nullptr;
-  const std::array<CornerWeights, 3>& from = cut_before ? parent_cut->weights : whole_face;
+  if (parent < solid_faces_) {
+    // A first cut of a solid face: each corner is one of its corners, or the crossing of two at t with
+    // weights 1 - t and t (the lerp below of unit weights, exactly).
+    Cut& cut = cuts_.emplace_back();
+    cut.face = parent;
+    for (std::size_t i = 0; i < 3; ++i) {
+      const CornerMix& m = mix[i];
+      CornerWeights& w = cut.weights[i];
+      w = CornerWeights{0.0, 0.0, 0.0};
+      if (m.from == m.to || m.t == 0.0) {
+        w[static_cast<std::size_t>(m.from)] = 1.0;
+      } else {
+        w[static_cast<std::size_t>(m.from)] = 1.0 - m.t;
+        w[static_cast<std::size_t>(m.to)] = m.t;
+      }
+    }
+    return solid_faces_ + static_cast<std::int32_t>(cuts_.size() - 1);
+  }
+  const Cut& parent_cut = cuts_[static_cast<std::size_t>(parent - solid_faces_)];
   Cut& cut = cuts_.emplace_back();
-  cut.face = cut_before ? parent_cut->face : parent;
-  for (int i = 0; i < 3; ++i) {
-    const CornerMix& m = mix[static_cast<std::size_t>(i)];
-    const CornerWeights& a = from[static_cast<std::size_t>(m.from)];
-    const CornerWeights& b = from[static_cast<std::size_t>(m.to)];
-    CornerWeights& w = cut.weights[static_cast<std::size_t>(i)];
+  cut.face = parent_cut.face;
+  for (std::size_t i = 0; i < 3; ++i) {
+    const CornerMix& m = mix[i];
+    const CornerWeights& a = parent_cut.weights[static_cast<std::size_t>(m.from)];
+    const CornerWeights& b = parent_cut.weights[static_cast<std::size_t>(m.to)];
+    CornerWeights& w = cut.weights[i];
     if (m.from == m.to || m.t == 0.0) {
       w = a;
       continue;
@@ -49,9 +63,13 @@ std::int32_t CornerProvenance::mixed(std::int32_t parent, const std::array<Corne
   return solid_faces_ + static_cast<std::int32_t>(cuts_.size() - 1);
 }
 
-std::int32_t CornerProvenance::cap(const Vec3& outward_normal) {
-  cap_dressings_.push_back(cut_face_dressing(solid_.attributes, outward_normal));
-  return -static_cast<std::int32_t>(cap_dressings_.size());
+std::array<std::int32_t, 2> CornerProvenance::caps(const Vec3& normal) {
+  // The two sides share the plane's frame: one dressing is built, the other is its reverse.
+  if (cap_dressings_.capacity() - cap_dressings_.size() < 2) cap_dressings_.reserve(2 * cap_dressings_.size() + 32);
+  const PlanarDressing& along = cap_dressings_.emplace_back(cut_face_dressing(solid_.attributes, normal));
+  cap_dressings_.push_back(along.reversed());
+  const auto last = static_cast<std::int32_t>(cap_dressings_.size());
+  return {-(last - 1), -last};
 }
 
 Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
@@ -115,15 +133,19 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
     const std::size_t at = corners.size();
     corners.resize(at + run * face_values);
     double* out_values = corners.data() + at;
-    for (const std::size_t end = f + run; f < end; ++f, out_values += face_values) {
+    const std::size_t end = f + run;
+    while (f < end) {
       const std::int32_t r = records[f];
       if (is_cap(r)) {
-        const Triangle& t = piece.triangles[f];
-        cap_dressings_[static_cast<std::size_t>(-r - 1)].write(
-            piece.vertices[static_cast<std::size_t>(t[0])], piece.vertices[static_cast<std::size_t>(t[1])],
-            piece.vertices[static_cast<std::size_t>(t[2])], out_values);
-        if (!caps_bounded_) tally.add(out_values, face_values);
-        if (materials) attr.materials[f] = attr.cut.material;
+        // A run of cap faces of one side of one cut (a cut adds its caps together): dressed in one call.
+        std::size_t caps = 1;
+        while (f + caps < end && records[f + caps] == r) ++caps;
+        cap_dressings_[static_cast<std::size_t>(-r - 1)].write_faces(piece, f, caps, out_values);
+        if (!caps_bounded_) tally.add(out_values, caps * face_values);
+        if (materials)
+          std::fill_n(attr.materials.begin() + static_cast<std::ptrdiff_t>(f), caps, attr.cut.material);
+        f += caps;
+        out_values += caps * face_values;
         continue;
       }
       const Cut& cut = cuts_[static_cast<std::size_t>(r - solid_faces_)];
@@ -139,6 +161,8 @@ Result<Mesh> CornerProvenance::resolve(Mesh&& piece) const {
       }
       tally.add(out_values, face_values);
       if (materials) attr.materials[f] = solid_.attributes.materials[source];
+      ++f;
+      out_values += face_values;
     }
   }
   if (!tally.all_finite()) {

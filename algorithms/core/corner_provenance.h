@@ -42,9 +42,10 @@ class CornerProvenance {
   /// says over the parent face's corners.
   std::int32_t mixed(std::int32_t parent, const std::array<CornerMix, 3>& mix);
 
-  /// A record for the cap faces of one cut side, with outward normal `outward_normal` (any non-zero
-  /// length): one call per side of a cut, shared by all its cap faces.
-  std::int32_t cap(const Vec3& outward_normal);
+  /// The records of one cut's cap faces: first for the side whose caps face along `normal` (any
+  /// non-zero length), second for the side whose caps face against it. One call per cut, each record
+  /// shared by all cap faces of its side.
+  std::array<std::int32_t, 2> caps(const Vec3& normal);
 
   /// `piece` (a tracked piece) with the solid's attribute frame and every corner evaluated. No value
   /// that is not finite is returned: each is checked as it is written (the solid's values are read

@@ -238,7 +238,8 @@ bool MeshSlicer::add_cap() {
   }
   if (provenance_ != nullptr) {
     // Tracked pieces: the cap faces carry the record of their side's plane, dressed at the end.
-    const std::int32_t record[2] = {provenance_->cap(plane_.normal), provenance_->cap(-plane_.normal)};
+    // The lower half's caps face along the normal (below_side is 0), the upper half's against it.
+    const std::array<std::int32_t, 2> record = provenance_->caps(plane_.normal);
     for (const Triangle& t : cap.triangles) {
       const std::int32_t r0 = cap_ref_[static_cast<std::size_t>(t[0])];
       const std::int32_t r1 = cap_ref_[static_cast<std::size_t>(t[1])];

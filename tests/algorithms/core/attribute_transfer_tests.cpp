@@ -92,6 +92,41 @@ TEST_CASE("attributes: a cut face gets the plane normal, planar UVs, the tangent
   }
 }
 
+TEST_CASE("attributes: a cut-face dressing reversed is the dressing of the negated normal, value for value",
+          "[attributes]") {
+  const Mesh box = make_box(Vec3(2.0, 1.0, 0.5), Vec3(0.3, -0.2, 0.1));
+  const std::vector<AttributeLayout> layouts{{true, 1, true}, {true, 0, false}, {false, 2, false}, {true, 3, true}};
+  for (const AttributeLayout& layout : layouts) {
+    const std::size_t face_values = 3 * static_cast<std::size_t>(layout.stride());
+    for (const Vec3& n : {Vec3(0, 0, 1), Vec3(0, 0, -3), Vec3(1, 2, 3), Vec3(-3, 0.5, 0.1), Vec3(0, -1, 1e-9)}) {
+      INFO("stride " << layout.stride() << ", normal " << n.transpose());
+      const PlanarDressing along(layout, n, 0.7);
+      const PlanarDressing against(layout, -n, 0.7);
+      const PlanarDressing reversed = along.reversed();
+      // Every face of the box, one at a time and as one run: the same values, bit for bit.
+      std::vector<double> want(box.triangles.size() * face_values);
+      std::vector<double> got_face(want.size());
+      std::vector<double> got_run(want.size());
+      for (std::size_t f = 0; f < box.triangles.size(); ++f) {
+        against.write(corner_position(box, f, 0), corner_position(box, f, 1), corner_position(box, f, 2),
+                      want.data() + f * face_values);
+        reversed.write(corner_position(box, f, 0), corner_position(box, f, 1), corner_position(box, f, 2),
+                       got_face.data() + f * face_values);
+      }
+      reversed.write_faces(box, 0, box.triangles.size(), got_run.data());
+      CHECK(got_face == want);
+      CHECK(got_run == want);
+      // And reversing twice gives the dressing back.
+      std::vector<double> once(face_values);
+      std::vector<double> twice(face_values);
+      along.write(corner_position(box, 0, 0), corner_position(box, 0, 1), corner_position(box, 0, 2), once.data());
+      reversed.reversed().write(corner_position(box, 0, 0), corner_position(box, 0, 1), corner_position(box, 0, 2),
+                                twice.data());
+      CHECK(twice == once);
+    }
+  }
+}
+
 TEST_CASE("attributes: a corner mixed at parameter t is the linear interpolation, exactly for affine UVs", "[attributes]") {
   const Mesh src = test::with_affine_attributes(make_box(Vec3(2, 1, 3)));
   Mesh dst;
