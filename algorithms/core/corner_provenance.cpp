@@ -25,35 +25,21 @@ Mesh CornerProvenance::tracked() const {
 }
 
 std::int32_t CornerProvenance::mixed(std::int32_t parent, const std::array<CornerMix, 3>& mix) {
-  // The new record is written in place: room is made first, so the parent's record (which may be one
-  // of them) stays where it is.
+  // The new record is written in place: room is made first, so `from` (which may point into the
+  // records) stays valid.
   if (cuts_.size() == cuts_.capacity()) cuts_.reserve(2 * cuts_.size() + 64);
-  if (parent < solid_faces_) {
-    // A first cut of a solid face: each corner is one of its corners, or the crossing of two at t with
-    // weights 1 - t and t (the lerp below of unit weights, exactly).
-    Cut& cut = cuts_.emplace_back();
-    cut.face = parent;
-    for (std::size_t i = 0; i < 3; ++i) {
-      const CornerMix& m = mix[i];
-      CornerWeights& w = cut.weights[i];
-      w = CornerWeights{0.0, 0.0, 0.0};
-      if (m.from == m.to || m.t == 0.0) {
-        w[static_cast<std::size_t>(m.from)] = 1.0;
-      } else {
-        w[static_cast<std::size_t>(m.from)] = 1.0 - m.t;
-        w[static_cast<std::size_t>(m.to)] = m.t;
-      }
-    }
-    return solid_faces_ + static_cast<std::int32_t>(cuts_.size() - 1);
-  }
-  const Cut& parent_cut = cuts_[static_cast<std::size_t>(parent - solid_faces_)];
+  static constexpr std::array<CornerWeights, 3> whole_face{CornerWeights{1.0, 0.0, 0.0}, CornerWeights{0.0, 1.0, 0.0},
+                                                           CornerWeights{0.0, 0.0, 1.0}};
+  const bool cut_before = parent >= solid_faces_;
+  const Cut* parent_cut = cut_before ? &cuts_[static_cast<std::size_t>(parent - solid_faces_)] : nullptr;
+  const std::array<CornerWeights, 3>& from = cut_before ? parent_cut->weights : whole_face;
   Cut& cut = cuts_.emplace_back();
-  cut.face = parent_cut.face;
-  for (std::size_t i = 0; i < 3; ++i) {
-    const CornerMix& m = mix[i];
-    const CornerWeights& a = parent_cut.weights[static_cast<std::size_t>(m.from)];
-    const CornerWeights& b = parent_cut.weights[static_cast<std::size_t>(m.to)];
-    CornerWeights& w = cut.weights[i];
+  cut.face = cut_before ? parent_cut->face : parent;
+  for (int i = 0; i < 3; ++i) {
+    const CornerMix& m = mix[static_cast<std::size_t>(i)];
+    const CornerWeights& a = from[static_cast<std::size_t>(m.from)];
+    const CornerWeights& b = from[static_cast<std::size_t>(m.to)];
+    CornerWeights& w = cut.weights[static_cast<std::size_t>(i)];
     if (m.from == m.to || m.t == 0.0) {
       w = a;
       continue;
