@@ -74,6 +74,12 @@ class Registry {
     other.entries_.clear();
   }
 
+  /// Replaces each entry's factory by `wrap(name, factory)`: how the plugin loader puts its guard
+  /// (harness/plugins/plugin_guard.h) between a plugin's code and the host.
+  void wrap_factories(const std::function<Factory(const std::string& name, Factory factory)>& wrap) {
+    for (Entry& e : entries_) e.factory = wrap(e.name, std::move(e.factory));
+  }
+
   /// Registered names, in registration order.
   [[nodiscard]] std::vector<std::string> names() const {
     std::vector<std::string> out;

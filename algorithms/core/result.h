@@ -9,9 +9,19 @@
 
 namespace shatter {
 
+/// What an error is about: the input (a file, a flag, a setting, a request an algorithm documents it
+/// cannot honour), or a fault of an algorithm's code that the host caught (an exception, a null, a
+/// result that failed the host's output checks: harness/plugins/plugin_guard.h). The first is the
+/// user's to fix (exit code 2); the second fails that algorithm's result (exit code 1).
+enum class ErrorCause : unsigned char {
+  input,            ///< the input cannot be used
+  algorithm_fault,  ///< an algorithm's code misbehaved on an input that was accepted
+};
+
 /// An error meant for the user: one line that names the file, key or line and what is wrong.
 struct Error {
-  std::string message;  ///< one line, no trailing newline
+  std::string message;                 ///< one line, no trailing newline
+  ErrorCause cause = ErrorCause::input;  ///< whose the error is
 };
 
 /// Either a `T` or an `Error`.

@@ -1,5 +1,7 @@
 #include "harness/accuracy/accuracy_output.h"
 
+#include "harness/results/markdown_text.h"
+
 #include <fmt/core.h>
 
 #include <cmath>
@@ -43,12 +45,12 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
     for (const AccuracyPoint& p : points) {
       if (p.family != "fracture") continue;
       if (p.figures.contains("failed") && !p.figures.contains("fragments")) {
-        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | - | - | {} |\n", p.case_name, p.algorithm, p.knob,
-                           p.figures["failed"].get<std::string>());
+        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | - | - | {} |\n", markdown_cell(p.case_name), markdown_cell(p.algorithm), markdown_cell(p.knob),
+                           markdown_cell(p.figures["failed"].get<std::string>()));
         continue;
       }
-      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", p.case_name, p.algorithm,
-                         p.knob, cell(p.figures, "fragments"), time_text(p.time_ms), error_text(p),
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", markdown_cell(p.case_name), markdown_cell(p.algorithm),
+                         markdown_cell(p.knob), cell(p.figures, "fragments"), time_text(p.time_ms), error_text(p),
                          cell(p.figures, "volume_error"), cell(p.figures, "partition_error"),
                          cell(p.figures, "area_error"), cell(p.figures, "all_closed"), front_text(p));
     }
@@ -64,15 +66,15 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
     for (const AccuracyPoint& p : points) {
       if (p.family != "stress") continue;
       if (p.figures.contains("failed")) {
-        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | - | - | {} |\n", p.case_name, p.algorithm, p.knob,
-                           p.figures["failed"].get<std::string>());
+        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | - | - | {} |\n", markdown_cell(p.case_name), markdown_cell(p.algorithm), markdown_cell(p.knob),
+                           markdown_cell(p.figures["failed"].get<std::string>()));
         continue;
       }
       std::string first = cell(p.figures, "first_bond");
       if (p.figures.value("first_bond_ties", 1) > 1)
         first += fmt::format(" (tie of {})", p.figures["first_bond_ties"].get<int>());
-      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", p.case_name, p.algorithm,
-                         p.knob, cell(p.figures, "bonds"), time_text(p.time_ms), error_text(p),
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", markdown_cell(p.case_name), markdown_cell(p.algorithm),
+                         markdown_cell(p.knob), cell(p.figures, "bonds"), time_text(p.time_ms), error_text(p),
                          cell(p.figures, "analytic_error"), cell(p.figures, "solver_error"), first,
                          cell(p.figures, "first_bond_match"), front_text(p));
     }
@@ -88,13 +90,13 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
     out += "|---|---|---|---:|---:|---:|---:|---:|---|\n";
     for (const AccuracyPoint& p : points) {
       if (p.family != "colliders") continue;
-      const std::string fracturer = p.knobs.value("fracturer", std::string("-"));
+      const std::string fracturer = markdown_cell(p.knobs.value("fracturer", std::string("-")));
       if (p.figures.contains("failed")) {
-        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | {} |\n", p.case_name, fracturer, p.knob,
-                           p.figures["failed"].get<std::string>());
+        out += fmt::format("| {} | {} | {} | - | failed | - | - | - | {} |\n", markdown_cell(p.case_name), fracturer, markdown_cell(p.knob),
+                           markdown_cell(p.figures["failed"].get<std::string>()));
         continue;
       }
-      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", p.case_name, fracturer, p.knob,
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", markdown_cell(p.case_name), fracturer, markdown_cell(p.knob),
                          cell(p.figures, "pieces"), time_text(p.time_ms), error_text(p),
                          cell(p.figures, "mean_volume_loss"), cell(p.figures, "mean_points"), front_text(p));
     }
@@ -111,12 +113,12 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
     for (const AccuracyPoint& p : points) {
       if (p.family != "cascade") continue;
       if (p.figures.contains("failed")) {
-        out += fmt::format("| {} | {} | {} | {} | failed | - | - | - | - | - | {} |\n", p.case_name, p.algorithm,
-                           p.knob, cell(p.figures, "bonds"), p.figures["failed"].get<std::string>());
+        out += fmt::format("| {} | {} | {} | {} | failed | - | - | - | - | - | {} |\n", markdown_cell(p.case_name), markdown_cell(p.algorithm),
+                           markdown_cell(p.knob), cell(p.figures, "bonds"), markdown_cell(p.figures["failed"].get<std::string>()));
         continue;
       }
-      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} / {} | {} / {} | {} / {} | {} | {} |\n", p.case_name,
-                         p.algorithm, p.knob, cell(p.figures, "bonds"), time_text(p.time_ms), error_text(p),
+      out += fmt::format("| {} | {} | {} | {} | {} | {} | {} / {} | {} / {} | {} / {} | {} | {} |\n", markdown_cell(p.case_name),
+                         markdown_cell(p.algorithm), markdown_cell(p.knob), cell(p.figures, "bonds"), time_text(p.time_ms), error_text(p),
                          cell(p.figures, "broken"), cell(p.figures, "reference_broken"), cell(p.figures, "falling"),
                          cell(p.figures, "reference_falling"), cell(p.figures, "rounds"),
                          cell(p.figures, "reference_rounds"), cell(p.figures, "round_error"), front_text(p));

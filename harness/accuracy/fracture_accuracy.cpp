@@ -97,6 +97,19 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
   return p;
 }
 
+/// The point of a fracturer that could not be made (a plugin's factory failed): failed, no figures.
+AccuracyPoint uncreated(const std::string& case_name, const std::string& name, int fragments, const Error& why) {
+  AccuracyPoint p;
+  p.family = "fracture";
+  p.case_name = case_name;
+  p.algorithm = name;
+  p.knobs = {{"fragments", fragments}};
+  p.knob = fmt::format("fragments={}", fragments);
+  p.time_ms = std::numeric_limits<double>::quiet_NaN();
+  p.figures = {{"failed", why.message}};
+  return p;
+}
+
 }  // namespace
 
 std::vector<std::string> default_accuracy_fracturers(const Registries& registries) {
@@ -134,13 +147,19 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
       for (const auto& [key, values] : knobs)
         for (const double value : values) {
           Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name, {{key, value}});
-          if (!f) return f.error();
+          if (!f) {
+            points.push_back(uncreated(case_name, name, n, f.error()));
+            continue;
+          }
           Setting s{std::move(*f), n, std::make_pair(key, value)};
           points.push_back(measure(case_name, solid, impact, s, options, verdicts));
         }
       if (!knobs.empty()) continue;
       Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name);
-      if (!f) return f.error();
+      if (!f) {
+        points.push_back(uncreated(case_name, name, n, f.error()));
+        continue;
+      }
       Setting s{std::move(*f), n, std::nullopt};
       points.push_back(measure(case_name, solid, impact, s, options, verdicts));
     }

@@ -42,6 +42,11 @@ int fail_check(std::string_view message) {
   return exit_gate_failed;
 }
 
+int fail_algorithm(std::string_view context, const Error& error) {
+  const std::string line = context.empty() ? error.message : std::string(context) + ": " + error.message;
+  return error.cause == ErrorCause::algorithm_fault ? fail_check(line) : fail_input(line);
+}
+
 int print_failed_checks(std::string_view subject, const std::vector<std::string>& failed) {
   for (const std::string& check : failed) print_line("check failed", subject.empty() ? check : std::string(subject) + ": " + check);
   return static_cast<int>(failed.size());

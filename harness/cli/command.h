@@ -13,8 +13,10 @@
 
 namespace shatter::cli {
 
-/// Exit codes of the CLI (DESIGN.md section 8).
-enum ExitCode : int { exit_ok = 0, exit_gate_failed = 1, exit_bad_input = 2 };
+/// Exit codes of the CLI (DESIGN.md section 8; README "The command line"). exit_internal_error is a
+/// defect of shatterbench itself or memory exhausted (an exception no command turned into an answer),
+/// with one line on stderr; every fault of a plugin's code is its algorithm's failed result instead.
+enum ExitCode : int { exit_ok = 0, exit_gate_failed = 1, exit_bad_input = 2, exit_internal_error = 3 };
 
 /// Prints "shatterbench: error: <message>" on stderr (one line) and returns exit_bad_input.
 int fail_input(std::string_view message);
@@ -22,6 +24,10 @@ int fail_input(std::string_view message);
 /// Prints "shatterbench: check failed: <message>" on stderr (one line) and returns exit_gate_failed:
 /// the command's own check found its result invalid, so nothing of it is reported as an answer.
 int fail_check(std::string_view message);
+
+/// An algorithm's error, `context` (e.g. the mesh) before it: fail_check for a fault of the algorithm's
+/// code (ErrorCause::algorithm_fault: it failed on an accepted input, exit 1), fail_input otherwise.
+int fail_algorithm(std::string_view context, const Error& error);
 
 /// Prints "shatterbench: check failed: <subject>: <check>" on stderr for every entry of `failed` (one
 /// line each; "<subject>: " left out when `subject` is empty) and returns the number of lines printed.

@@ -38,7 +38,7 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
                                    CutFaceOptions{.uv_scale = o.cap_uv_scale, .interior = {}});
   if (!solid) return fail_input(solid.error().message);
   Result<std::unique_ptr<Fracturer>> fracturer = registries.fracturers.create(o.algorithm);
-  if (!fracturer) return fail_input("--algo: " + fracturer.error().message);
+  if (!fracturer) return fail_algorithm("--algo", fracturer.error());
 
   FractureParams params;
   params.fragments = o.fragments;
@@ -52,7 +52,7 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
   const auto start = std::chrono::steady_clock::now();
   Result<std::vector<Fragment>> fragments = (*fracturer)->fracture(solid->mesh, params);
   const auto stop = std::chrono::steady_clock::now();
-  if (!fragments) return fail_input(o.mesh + ": " + fragments.error().message);
+  if (!fragments) return fail_algorithm(o.mesh, fragments.error());
   const double time_ms = std::chrono::duration<double, std::milli>(stop - start).count();
 
   const FractureMetrics m = fracture_metrics(solid->mesh, solid->mass, *fragments, o.fragments);

@@ -223,7 +223,7 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
           "one process, without a time limit)");
     options.cell_timeout_s = *o.timeout_s;
   }
-  if (Status s = check_grid_options(*c, options, registries); !s) return fail_input(s.error().message);
+  if (Status s = check_grid_options(*c, options, registries); !s) return fail_algorithm("", s.error());
 
   std::filesystem::path json_path = o.json;
   if (o.update_baseline) {

@@ -1,5 +1,8 @@
 #include "harness/cli/run_cli.h"
 
+#include "harness/plugins/plugin_guard.h"
+#include "harness/signals/interrupt_cleanup.h"
+
 #include "harness/cli/command.h"
 #include "harness/cli/numeric_flags.h"
 #include "harness/plugins/plugin_loader.h"
@@ -96,6 +99,9 @@ Result<LoadedRegistries> with_plugins(const Registries& registries, const std::v
 }  // namespace
 
 int run_cli(int argc, char** argv, const Registries& builtin) {
+  // An interrupt ends the children this command starts and removes its temporaries (unless the
+  // program calling run_cli handles the signals itself).
+  install_interrupt_cleanup();
   using namespace cli;
   PluginArguments arguments = take_plugin_arguments(argc, argv);
   if (!arguments.error.empty()) return fail_input(arguments.error);
@@ -162,8 +168,11 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
     // check below could see it: the same bad destination, the same answer.
     if (std::ferror(stdout))
       return fail_input(std::string("cannot write to standard output: ") + std::strerror(errno ? errno : EIO));
-    std::fprintf(stderr, "shatterbench: internal error: %s\n", e.what());
-    return 3;
+    std::fprintf(stderr, "shatterbench: internal error: %s\n", one_printable_line(e.what()).c_str());
+    return exit_internal_error;
+  } catch (...) {
+    std::fprintf(stderr, "shatterbench: internal error: an exception that is not a std::exception\n");
+    return exit_internal_error;
   }
   // Output that did not reach its destination (a full disk, a closed pipe) is not a success.
   std::cout.flush();

@@ -93,14 +93,14 @@ int run_stress(const StressOptions& o, const Registries& registries) {
   over.stress_model = o.model;
   const std::string model_name = resolve_settings(*c, over).stress_model;
   auto model = registries.stress_models.create(model_name, settings_for(model_name, c->stress.model, c->stress.settings));
-  if (!model) return fail_input((o.model.empty() ? c->name + ": stress.model: " : "--model: ") + model.error().message);
+  if (!model) return fail_algorithm(o.model.empty() ? c->name + ": stress.model" : "--model", model.error());
   Result<CaseStructure> structure = build_case_structure(*c, registries);
-  if (!structure) return fail_input(structure.error().message);
+  if (!structure) return fail_algorithm("", structure.error());
   Loads loads;
   loads.gravity = c->gravity;
   const std::unique_ptr<StressSolver> solver = (*model)->make_solver(structure->graph, c->material);
   auto result = propagate(*solver, loads);
-  if (!result) return fail_input(c->name + ": " + result.error().message);
+  if (!result) return fail_algorithm(c->name, result.error());
   // A solve that did not converge has no answer to print (its forces are not the structure's).
   if (!result->report.converged) return fail_check(c->name + ": " + convergence_failure(result->report));
   if (o.json)

@@ -6,6 +6,7 @@
 #include "harness/cli/command.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
+#include "harness/results/markdown_text.h"
 
 #include <fmt/core.h>
 
@@ -39,11 +40,18 @@ double median(std::vector<double> v) {
 
 int run_table(TableOptions o, const Registries& r) {
   if (o.algorithms.empty()) o.algorithms = r.fracturers.names();
-  std::vector<std::unique_ptr<Fracturer>> fracturers;
+  // A fracturer whose code failed to make it (a plugin's factory threw or gave a null) is a failed row
+  // of its own; an unknown name or bad settings are the command line's error.
+  struct Candidate {
+    std::string name;
+    std::unique_ptr<Fracturer> fracturer;  // null when it could not be made
+    Error error;
+  };
+  std::vector<Candidate> fracturers;
   for (const std::string& name : o.algorithms) {
     auto f = r.fracturers.create(name);
-    if (!f) return fail_input("--algo: " + f.error().message);
-    fracturers.push_back(std::move(*f));
+    if (!f && f.error().cause != ErrorCause::algorithm_fault) return fail_input("--algo: " + f.error().message);
+    fracturers.push_back(f ? Candidate{name, std::move(*f), {}} : Candidate{name, nullptr, f.error()});
   }
   std::vector<Solid> solids;
   for (const std::string& path : o.meshes) {
@@ -65,15 +73,22 @@ int run_table(TableOptions o, const Registries& r) {
       struct Row {
         std::string algorithm;
         std::string refused;  // a fracturer's refusal of this input (e.g. self-intersecting): shown, not fatal
+        bool fault = false;   // the refusal is a fault of its code (ErrorCause::algorithm_fault): the run fails
         double ms;
         std::size_t count;
         FractureMetrics metrics;
       };
       std::vector<Row> rows;
-      for (const auto& fracturer : fracturers) {
+      for (const Candidate& candidate : fracturers) {
+        if (!candidate.fracturer) {
+          rows.push_back({candidate.name, candidate.error.message, true, 0.0, 0, {}});
+          continue;
+        }
+        const Fracturer* fracturer = candidate.fracturer.get();
         std::vector<double> times;
         std::vector<Fragment> first;
         std::string refused;
+        bool fault = false;
         for (int rep = 0; rep < o.repetitions && refused.empty(); ++rep) {
           FractureParams params;
           params.fragments = n;
@@ -84,16 +99,17 @@ int run_table(TableOptions o, const Registries& r) {
           const auto t1 = std::chrono::steady_clock::now();
           if (!fragments) {
             refused = fragments.error().message;
+            fault = fragments.error().cause == ErrorCause::algorithm_fault;
             break;
           }
           times.push_back(std::chrono::duration<double, std::milli>(t1 - t0).count());
           if (rep == 0) first = std::move(*fragments);
         }
         if (!refused.empty()) {
-          rows.push_back({std::string(fracturer->name()), refused, 0.0, 0, {}});
+          rows.push_back({candidate.name, refused, fault, 0.0, 0, {}});
           continue;
         }
-        rows.push_back({std::string(fracturer->name()), {}, median(times), first.size(),
+        rows.push_back({candidate.name, {}, false, median(times), first.size(),
                         fracture_metrics(solid.mesh, solid.mass, first, n)});
       }
       double fastest = std::numeric_limits<double>::infinity();
@@ -104,9 +120,11 @@ int run_table(TableOptions o, const Registries& r) {
           for (const std::string& check : failed_fracture_checks(row.metrics))
             failed.push_back(fmt::format("{} {} {} fragments: {}", mesh_name, row.algorithm, n, check));
       for (const Row& row : rows)
+        if (row.fault) failed.push_back(fmt::format("{} {} {} fragments: {}", mesh_name, row.algorithm, n, row.refused));
+      for (const Row& row : rows)
         if (!row.refused.empty())
-          fmt::print("| {} | {} | {} | {} | refused: {} | | | | | | | |\n", mesh_name, solid.mesh.triangle_count(),
-                     row.algorithm, n, row.refused);
+          fmt::print("| {} | {} | {} | {} | {}: {} | | | | | | | |\n", mesh_name, solid.mesh.triangle_count(),
+                     row.algorithm, n, row.fault ? "failed" : "refused", markdown_cell(row.refused));
         else
           fmt::print("| {} | {} | {} | {} | {} | {:.3f} | {:.1f} | {:.2e} | {:.4f} | {:.2e} | {} | {:.3e} |\n",
                    mesh_name, solid.mesh.triangle_count(), row.algorithm, n, row.count, row.ms,

@@ -74,27 +74,23 @@ Status check_grid_limits(const Case& c, const GridOptions& o) {
   return {};
 }
 
-std::string fmt_cell_error(int prefracture, int runtime, const std::string& message) {
-  return "cell " + std::to_string(prefracture) + " x " + std::to_string(runtime) + ": " + message;
-}
-
 }  // namespace
 
 Status check_grid_options(const Case& c, const GridOptions& o, const Registries& reg) {
   if (!o.fracturer.empty()) {
-    if (auto f = reg.fracturers.create(o.fracturer); !f) return Error{"--fracturer: " + f.error().message};
+    if (auto f = reg.fracturers.create(o.fracturer); !f) return Error{"--fracturer: " + f.error().message, f.error().cause};
   } else {
     if (!c.prefracture.explicit_planes())
       if (auto f = reg.fracturers.create(c.prefracture.fracturer, c.prefracture.settings); !f)
-        return Error{c.name + ": prefracture.fracturer: " + f.error().message};
+        return Error{c.name + ": prefracture.fracturer: " + f.error().message, f.error().cause};
     if (auto f = reg.fracturers.create(c.runtime.fracturer, c.runtime.settings); !f)
-      return Error{c.name + ": runtime.fracturer: " + f.error().message};
+      return Error{c.name + ": runtime.fracturer: " + f.error().message, f.error().cause};
   }
   if (!o.stress_model.empty()) {
     if (auto m = reg.stress_models.create(o.stress_model, settings_for(o.stress_model, c.stress.model, c.stress.settings)); !m)
-      return Error{"--stress: " + m.error().message};
+      return Error{"--stress: " + m.error().message, m.error().cause};
   } else if (auto m = reg.stress_models.create(c.stress.model, c.stress.settings); !m) {
-    return Error{c.name + ": stress.model: " + m.error().message};
+    return Error{c.name + ": stress.model: " + m.error().message, m.error().cause};
   }
   if (!std::isfinite(o.budget_ms) || o.budget_ms < 0.0)
     return Error{"--budget-ms: must be a finite number > 0, got " + std::to_string(o.budget_ms)};
@@ -160,7 +156,10 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     instruction_marks::set_run(p, r, rep);
     const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
     Result<RunResult> result = run_destruction(prepared, run, registries);
-    if (!result) return Error{fmt_cell_error(p, r, result.error().message)};
+    // Every input was checked before the grid began (check_grid_options): what fails now is an
+    // algorithm (a fracturer's or stress model's error, or its result refused by the output checks),
+    // and it fails this cell alone, as a throw does; the grid goes on and writes every output.
+    if (!result) return failed_grid_cell(cell, result.error().message);
     cell.samples.push_back(run_sample(*result, o.extra_figures));
     if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
     add_run_accuracy(cell.accuracy, *result, rep == 0);

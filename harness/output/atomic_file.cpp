@@ -1,11 +1,13 @@
 #include "harness/output/atomic_file.h"
 
 #include "harness/output/folder_lock.h"
+#include "harness/signals/interrupt_cleanup.h"
 
 #include <fmt/core.h>
 
 #include <cerrno>
 #include <cstring>
+#include <memory>
 #include <random>
 #include <string>
 #include <system_error>
@@ -91,18 +93,68 @@ void remove_stale_temporaries(const fs::path& path) {
   std::vector<fs::path> stale;
   for (fs::directory_iterator it(folder_of(path), ec), end; !ec && it != end; it.increment(ec)) {
     if (!is_temporary_of(it->path().filename().string(), stem)) continue;
+    // Only a staging folder is known to be ours: it holds the marker from its first moment. A file of
+    // that name may be the user's (a file being written has no name until it is complete), so it stays.
     std::error_code kind_ec;
-    const fs::file_status status = it->symlink_status(kind_ec);
-    if (fs::is_regular_file(status)) {
+    if (fs::is_directory(it->symlink_status(kind_ec)) && fs::exists(it->path() / kOutputMarker, kind_ec))
       stale.push_back(it->path());
-    } else if (fs::is_directory(status)) {
-      // A staging folder holds the marker from its first moment; a folder without it is not ours.
-      if (fs::is_empty(it->path(), kind_ec) || fs::exists(it->path() / kOutputMarker, kind_ec))
-        stale.push_back(it->path());
-    }
   }
   for (const fs::path& p : stale) fs::remove_all(p, ec);
 }
+
+namespace {
+
+/// One file of a set on its way to its target: written, flushed, then given a name and renamed.
+struct PendingFile {
+  int fd = -1;                                   ///< an unnamed file (O_TMPFILE), or -1
+  fs::path named;                                ///< the named temporary, once there is one
+  std::unique_ptr<RemovedOnInterrupt> removed;   ///< removes `named` if the process is interrupted
+};
+
+/// Creates and writes a named temporary beside `target` holding `content`; errno on failure.
+bool write_named(const fs::path& target, std::string_view content, PendingFile& file) {
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const fs::path temp = temporary_beside(target);
+    auto removed = std::make_unique<RemovedOnInterrupt>(temp);
+    // O_EXCL: never write into a file someone else created under the same name.
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd < 0) {
+      if (errno == EEXIST) continue;
+      return false;
+    }
+    file.named = temp;
+    file.removed = std::move(removed);
+    const bool ok = write_all(fd, content) && ::fsync(fd) == 0;
+    const int error = errno;
+    if (::close(fd) != 0 || !ok) {
+      errno = ok ? errno : error;
+      return false;
+    }
+    return true;
+  }
+  errno = EEXIST;
+  return false;
+}
+
+/// Gives the unnamed `file` a fresh temporary name beside `target`; false (errno set) when it cannot
+/// be linked (no /proc, another file system's rules): the caller then writes a named one.
+bool link_unnamed(const fs::path& target, PendingFile& file) {
+  const std::string self = "/proc/self/fd/" + std::to_string(file.fd);
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    const fs::path temp = temporary_beside(target);
+    auto removed = std::make_unique<RemovedOnInterrupt>(temp);
+    if (::linkat(AT_FDCWD, self.c_str(), AT_FDCWD, temp.c_str(), AT_SYMLINK_FOLLOW) == 0) {
+      file.named = temp;
+      file.removed = std::move(removed);
+      return true;
+    }
+    if (errno != EEXIST) return false;
+  }
+  errno = EEXIST;
+  return false;
+}
+
+}  // namespace
 
 Status write_files_atomically(std::span<const FileContent> files) {
   std::vector<fs::path> targets;
@@ -121,36 +173,44 @@ Status write_files_atomically(std::span<const FileContent> files) {
     remove_stale_temporaries(targets[i]);
   }
 
-  std::vector<fs::path> temps;
+  // Each file is written as an unnamed file of its folder (O_TMPFILE): a run killed while writing
+  // leaves nothing behind and no name is ever taken. Where the file system has none, a named
+  // temporary is written instead (removed on an interrupt; a SIGKILL leaves it, hidden, and it is
+  // never removed later, since a file of that name may be the user's).
+  std::vector<PendingFile> pending(files.size());
   const auto give_up = [&](const fs::path& path, const std::string& what, int error) {
-    std::error_code ec;
-    for (const fs::path& t : temps) fs::remove(t, ec);
+    for (PendingFile& p : pending) {
+      if (p.fd >= 0) ::close(p.fd);
+      if (!p.named.empty()) ::unlink(p.named.c_str());
+    }
     return Error{path.string() + ": " + what + ": " + std::strerror(error)};
   };
   for (std::size_t i = 0; i < files.size(); ++i) {
-    const fs::path temp = temporary_beside(targets[i]);
-    // O_EXCL: never write into a file someone else created under the same name.
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-    if (fd < 0) return give_up(files[i].path, "cannot write", errno);
-    temps.push_back(temp);
-    if (!write_all(fd, files[i].content)) {
-      const int error = errno;
-      ::close(fd);
-      return give_up(files[i].path, "cannot write", error);
+    PendingFile& p = pending[i];
+    p.fd = ::open(folders[i].c_str(), O_TMPFILE | O_WRONLY | O_CLOEXEC, 0666);
+    if (p.fd < 0) {
+      if (!write_named(targets[i], files[i].content, p)) return give_up(files[i].path, "cannot write", errno);
+      continue;
     }
-    if (::fsync(fd) != 0) {
-      const int error = errno;
-      ::close(fd);
-      return give_up(files[i].path, "cannot flush", error);
-    }
-    if (::close(fd) != 0) return give_up(files[i].path, "cannot write", errno);
+    if (!write_all(p.fd, files[i].content)) return give_up(files[i].path, "cannot write", errno);
+    if (::fsync(p.fd) != 0) return give_up(files[i].path, "cannot flush", errno);
+  }
+  // Every file is complete: each gets its temporary name, then all are renamed into place, in order.
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    PendingFile& p = pending[i];
+    if (p.fd < 0) continue;
+    const bool linked = link_unnamed(targets[i], p);
+    ::close(p.fd);
+    p.fd = -1;
+    if (!linked && !write_named(targets[i], files[i].content, p)) return give_up(files[i].path, "cannot write", errno);
   }
   for (std::size_t i = 0; i < files.size(); ++i) {
-    if (::rename(temps[i].c_str(), targets[i].c_str()) != 0) {
+    if (::rename(pending[i].named.c_str(), targets[i].c_str()) != 0) {
       const int error = errno;
-      temps.erase(temps.begin(), temps.begin() + static_cast<std::ptrdiff_t>(i));
+      for (std::size_t done = 0; done < i; ++done) pending[done].named.clear();
       return give_up(files[i].path, "cannot move into place", error);
     }
+    pending[i].named.clear();
   }
   for (const FolderLock& lock : *locks) sync_folder(lock.folder());
   return {};

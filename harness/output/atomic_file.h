@@ -1,10 +1,13 @@
 #pragma once
 /// Writing files so that readers see either the old content or the new, never a partial file.
 ///
-/// A file is written to a temporary sibling (`.NAME.partial-` plus 8 random hex digits), flushed to
-/// disk (fsync) and renamed over the target, with the lock of its folder held (folder_lock.h). Under
-/// that lock any temporary of the same name in the folder was left by a killed run: it is removed
-/// first, and never read.
+/// A file is written as an unnamed file in its target's folder (O_TMPFILE), flushed to disk (fsync),
+/// then given a temporary name beside the target (`.NAME.partial-` plus 8 random hex digits, taken
+/// only if free) and renamed over it, with the lock of its folder held (folder_lock.h). A run killed
+/// while writing leaves nothing; an interrupt (SIGINT, SIGTERM, SIGHUP) removes the named temporary
+/// of the short step between naming and renaming (harness/signals/interrupt_cleanup.h). Where the
+/// file system has no unnamed files, a named temporary is written instead. A file whose name looks
+/// like a temporary is never removed: it may be the user's.
 
 #include "algorithms/core/result.h"
 
@@ -21,8 +24,9 @@ inline constexpr std::string_view kOutputMarker = ".shatterbench-output";
 /// same folder (a rename within one folder is one step). Nothing is created.
 std::filesystem::path temporary_beside(const std::filesystem::path& path);
 
-/// Removes what killed runs left beside `path`: files named `.NAME.partial-XXXXXXXX`, and folders of
-/// that name that are empty or hold kOutputMarker. Call with the folder's lock held.
+/// Removes what killed runs left beside `path`: staging folders named `.NAME.partial-XXXXXXXX` that
+/// hold kOutputMarker (files and other folders of such names are left alone). Call with the folder's
+/// lock held.
 void remove_stale_temporaries(const std::filesystem::path& path);
 
 /// One file of an output set: where it goes and its bytes (as given).

@@ -2,6 +2,7 @@
 
 #include "harness/output/atomic_file.h"
 #include "harness/output/folder_lock.h"
+#include "harness/signals/interrupt_cleanup.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -52,6 +53,7 @@ Status write_folder_atomically(const fs::path& named, const FolderFiller& fill) 
   remove_stale_temporaries(dir);
 
   const fs::path staging = temporary_beside(dir);
+  const RemovedOnInterrupt removed_if_interrupted(staging);
   if (!fs::create_directory(staging, ec)) return Error{staging.string() + ": cannot create folder: " + ec.message()};
   const auto give_up = [&](Error e) {
     std::error_code ignored;

@@ -1,6 +1,8 @@
 #include "harness/plugins/plugin_loader.h"
 
 #include "algorithms/registry/plugin_api.h"
+#include "harness/plugins/plugin_guard.h"
+#include "harness/plugins/shared_object_check.h"
 
 #include <dlfcn.h>
 
@@ -45,13 +47,16 @@ Status register_plugin(void* handle, const std::string& path, Registries& regist
   if (symbol == nullptr)
     return Error{"plugin " + path + ": no " SHATTERBENCH_PLUGIN_ENTRY " entry point (not a shatterbench plugin)"};
   const ShatterbenchPluginV1* d = reinterpret_cast<Entry>(symbol)();
-  if (d == nullptr || d->register_plugins == nullptr)
-    return Error{"plugin " + path + ": its " SHATTERBENCH_PLUGIN_ENTRY " gives no registration function"};
+  if (d == nullptr) return Error{"plugin " + path + ": its " SHATTERBENCH_PLUGIN_ENTRY " gives no descriptor"};
+  // The ABI first: only a descriptor of this layout may be read further (its version is a pointer).
+  if (d->abi != SHATTERBENCH_PLUGIN_ABI)
+    return Error{"plugin " + path + ": built for plugin ABI " + std::to_string(d->abi) + ", this is shatterbench "
+                 SHATTERBENCH_VERSION " (plugin ABI " + std::to_string(SHATTERBENCH_PLUGIN_ABI) +
+                 "): rebuild it against this version"};
   const std::string version = d->version != nullptr ? std::string(d->version) : std::string("unknown");
-  if (d->abi != SHATTERBENCH_PLUGIN_ABI || version != SHATTERBENCH_VERSION)
-    return Error{"plugin " + path + ": built against shatterbench " + version + " (plugin ABI " +
-                 std::to_string(d->abi) + "), this is shatterbench " SHATTERBENCH_VERSION " (plugin ABI " +
-                 std::to_string(SHATTERBENCH_PLUGIN_ABI) + "): rebuild it against this version"};
+  if (version != SHATTERBENCH_VERSION)
+    return Error{"plugin " + path + ": built against shatterbench " + one_printable_line(version, 40) +
+                 ", this is shatterbench " SHATTERBENCH_VERSION ": rebuild it against this version"};
   if (d->cxx_abi != __GXX_ABI_VERSION)
     return Error{"plugin " + path + ": built with C++ ABI " + std::to_string(d->cxx_abi) + ", this is " +
                  std::to_string(__GXX_ABI_VERSION)};
@@ -59,6 +64,8 @@ Status register_plugin(void* handle, const std::string& path, Registries& regist
     return Error{"plugin " + path + ": built with other shatterbench headers or another standard library ABI "
                  "(layout " + std::to_string(d->layout) + ", this is " + std::to_string(shatterbench_plugin_layout()) +
                  "): rebuild it against this installation"};
+  if (d->register_plugins == nullptr)
+    return Error{"plugin " + path + ": its " SHATTERBENCH_PLUGIN_ENTRY " gives no registration function"};
   Registries staged;
   try {
     d->register_plugins(staged);
@@ -69,6 +76,8 @@ Status register_plugin(void* handle, const std::string& path, Registries& regist
   }
   if (Status s = check_entries(staged.fracturers, registries.fracturers, origins, path); !s) return s;
   if (Status s = check_entries(staged.stress_models, registries.stress_models, origins, path); !s) return s;
+  // From here on every object the plugin makes is reached through the host's guard.
+  guard_plugin_registrations(staged);
   loaded_files().push_back(path);
   for (const std::string& name : staged.fracturers.names()) origins[name] = path;
   for (const std::string& name : staged.stress_models.names()) origins[name] = path;
@@ -81,6 +90,7 @@ Status load_plugin(const std::string& path, Registries& registries, PluginOrigin
   // RTLD_NOW: an unresolved symbol is an error here, not a crash in the middle of a run. Relative
   // paths are made explicit so that dlopen never searches the library path for them.
   const std::string file = path.find('/') == std::string::npos ? "./" + path : path;
+  if (Status s = check_shared_object(path); !s) return s;
   void* handle = dlopen(file.c_str(), RTLD_NOW | RTLD_LOCAL);
   if (handle == nullptr) {
     const char* why = dlerror();

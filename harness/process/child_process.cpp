@@ -1,5 +1,7 @@
 #include "harness/process/child_process.h"
 
+#include "harness/signals/interrupt_cleanup.h"
+
 #include <cerrno>
 #include <cstring>
 
@@ -40,6 +42,7 @@ Result<ChildExit> run_child(const std::vector<std::string>& argv, const ChildOpt
   const int spawned = posix_spawnp(&pid, words[0].c_str(), &actions, nullptr, pointers.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
   if (spawned != 0) return Error{"cannot run " + argv[0] + ": " + std::strerror(spawned)};
+  const KilledOnInterrupt killed_with_us(pid);
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0) {
     if (errno != EINTR) return Error{"waiting for " + argv[0] + " failed: " + std::strerror(errno)};

@@ -1,5 +1,7 @@
 #include "harness/process/isolated_run.h"
 
+#include "harness/signals/interrupt_cleanup.h"
+
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -7,6 +9,7 @@
 #include <cstring>
 #include <exception>
 #include <poll.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -34,6 +37,7 @@ IsolatedRun run_isolated(const std::function<std::string()>& work, double time_l
   }
   std::fflush(nullptr);  // buffered output must not be printed twice
   const auto start = std::chrono::steady_clock::now();
+  const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) {
     ::close(fds[0]);
@@ -43,8 +47,12 @@ IsolatedRun run_isolated(const std::function<std::string()>& work, double time_l
   }
   if (pid == 0) {
     ::close(fds[0]);
-    // A crash must end the child, not run the parent's handlers (a test framework's, for example).
+    // A crash must end the child, not run the parent's handlers (a test framework's, for example);
+    // an interrupt ends it as the default says, and so does its parent's end, however it comes.
     for (const int sig : {SIGSEGV, SIGABRT, SIGBUS, SIGFPE, SIGILL, SIGTRAP}) std::signal(sig, SIG_DFL);
+    reset_interrupt_cleanup_in_child();
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) ::_exit(3);  // the parent ended before the request took effect
     int code = 0;
     try {
       write_all(fds[1], work());
@@ -58,6 +66,7 @@ IsolatedRun run_isolated(const std::function<std::string()>& work, double time_l
     ::_exit(code);
   }
   ::close(fds[1]);
+  const KilledOnInterrupt killed_with_us(pid);
   const auto elapsed_ms = [&] {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   };

@@ -38,13 +38,4 @@ Status run_gnuplot(const std::filesystem::path& folder, const std::string& scrip
   return {};
 }
 
-std::string gnuplot_quote(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '\\' || c == '"') out += '\\';
-    out += c;
-  }
-  return out;
-}
-
 }  // namespace shatter

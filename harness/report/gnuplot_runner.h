@@ -16,8 +16,4 @@ std::string gnuplot_program();
 /// the first line gnuplot printed on stderr.
 Status run_gnuplot(const std::filesystem::path& folder, const std::string& script);
 
-/// Escapes `s` for a gnuplot string in double quotes (backslashes and quotes; the scripts use
-/// `noenhanced` terminals, so no other character is special).
-std::string gnuplot_quote(const std::string& s);
-
 }  // namespace shatter

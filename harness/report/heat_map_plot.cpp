@@ -1,6 +1,7 @@
 #include "harness/report/heat_map_plot.h"
 
 #include "harness/report/gnuplot_runner.h"
+#include "harness/report/gnuplot_text.h"
 #include "harness/output/atomic_file.h"
 
 #include <fmt/core.h>
@@ -59,12 +60,16 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
   const int width = std::max(640, 110 * static_cast<int>(columns.size()) + 260);
   const int height = std::max(420, 48 * static_cast<int>(rows.size()) + 170);
   const std::string image = stem + ".png";
+  // The case name is text from a file: data, read into a variable (gnuplot_text.h).
+  GnuplotStrings strings;
+  const std::string case_title = strings.add(grid.case_name);
   std::string script;
   script += fmt::format("set terminal pngcairo noenhanced size {},{} font \"Sans,10\"\n", width, height);
   script += fmt::format("set output \"{}\"\n", image);
+  script += strings.load(stem + ".txt");
   script += fmt::format(
-      "set title \"{}: worst frame per cell (ms), budget {:g} ms\\n{} of {} cells over the budget (red, framed, !){}\"\n",
-      gnuplot_quote(grid.case_name), b, over, grid.cells.size(), failed_note);
+      "set title {} . \": worst frame per cell (ms), budget {:g} ms\\n{} of {} cells over the budget (red, framed, !){}\"\n",
+      case_title, b, over, grid.cells.size(), failed_note);
   script += "set xlabel \"runtime fragments\"\nset ylabel \"pre-fracture fragments\"\n";
   script += fmt::format("set xrange [-0.5:{}]\nset yrange [-0.5:{}]\n", columns.size() - 0.5, rows.size() - 0.5);
   script += fmt::format("set xtics ({}) scale 0\nset ytics ({}) scale 0\n", xtics, ytics);
@@ -81,6 +86,7 @@ Result<std::string> plot_heat_map(const ReportGrid& grid, const std::filesystem:
       "     \"{0}.dat\" using 1:2:($5 == 1 ? stringcolumn(4) : \"\") with labels font \"Sans Bold,10\" tc rgb \"white\", \\\n"
       "     \"{0}.dat\" using 1:2:($5 == 2 ? stringcolumn(4) : \"\") with labels font \"Sans Bold,10\" tc rgb \"black\"\n",
       stem);
+  if (Status s = write_file_atomically(folder / (stem + ".txt"), strings.data()); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
   if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();

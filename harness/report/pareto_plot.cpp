@@ -1,6 +1,7 @@
 #include "harness/report/pareto_plot.h"
 
 #include "harness/report/gnuplot_runner.h"
+#include "harness/report/gnuplot_text.h"
 #include "harness/output/atomic_file.h"
 
 #include <fmt/core.h>
@@ -58,16 +59,17 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   for (std::size_t i = 0; i < front.size(); ++i) {
     const AccuracyPoint& p = *front[i];
     const double ly = i % 2 == 0 ? y(p) * 1.6 : y(p) / 1.9;
-    front_data += fmt::format("{:.6g} {:.6g} \"{} {}\" {:.6g} {:.6g}\n", p.time_ms, y(p), p.algorithm,
-                              short_knob(p.knob), p.time_ms * 1.06, ly);
+    front_data += fmt::format("{:.6g} {:.6g} {} {:.6g} {:.6g}\n", p.time_ms, y(p),
+                              gnuplot_data_field(p.algorithm + " " + short_knob(p.knob)), p.time_ms * 1.06, ly);
     placed.emplace_back(p.time_ms, y(p));
   }
   if (front.empty()) front_data += "NaN NaN \"\" NaN NaN\n";
 
   // One data block per algorithm (index a), then the front sorted by time (last index).
   std::string data;
-  for (const std::string& a : algorithms) {
-    data += "# " + a + "\n";
+  for (std::size_t a_index = 0; a_index < algorithms.size(); ++a_index) {
+    const std::string& a = algorithms[a_index];
+    data += fmt::format("# algorithm {} (names in the .txt file beside this one)\n", a_index + 1);
     for (const AccuracyPoint* p : shown) {
       if (p->algorithm != a) continue;
       std::string label;
@@ -75,19 +77,25 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
         label = short_knob(p->knob);
         placed.emplace_back(p->time_ms, y(*p));
       }
-      data += fmt::format("{:.6g} {:.6g} \"{}\"\n", p->time_ms, y(*p), label);
+      data += fmt::format("{:.6g} {:.6g} {}\n", p->time_ms, y(*p), gnuplot_data_field(label));
     }
     data += "\n\n";
   }
   data += front_data;
 
   const std::string image = stem + ".png";
+  // Names from the results file (case, algorithms) are data (gnuplot_text.h).
+  GnuplotStrings strings;
+  const std::string title = strings.add(
+      fmt::format("{} on {}: time against error, Pareto front dashed and labelled in bold{}", family, case_name,
+                  floored ? fmt::format(" (error 0 drawn at {:.0e})", floor) : std::string()));
+  std::vector<std::string> legend;
+  for (const std::string& a : algorithms) legend.push_back(strings.add(a));
   std::string script;
   script += "set terminal pngcairo noenhanced size 1000,640 font \"Sans,10\"\n";
   script += fmt::format("set output \"{}\"\n", image);
-  script += fmt::format("set title \"{} on {}: time against error, Pareto front dashed and labelled in bold{}\\npoint labels: knob (fragments, r = fem-lite resolution; slabs, cg = CG tolerance or iteration cap)\"\n", family,
-                        gnuplot_quote(case_name),
-                        floored ? fmt::format(" (error 0 drawn at {:.0e})", floor) : std::string());
+  script += strings.load(stem + ".txt");
+  script += fmt::format("set title {} . \"\\npoint labels: knob (fragments, r = fem-lite resolution; slabs, cg = CG tolerance or iteration cap)\"\n", title);
   script += "set logscale xy\nset format y \"%.0e\"\nset grid\nset key outside right top\n";
   script += "set xlabel \"time (ms, median of the repetitions)\"\n";
   script += family == "fracture"    ? "set ylabel \"replay error (relative volume mismatch)\"\n"
@@ -100,14 +108,15 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
             "set linetype 5 lc rgb \"#f28e2b\" pt 13\n";
   script += "plot \\\n";
   for (std::size_t a = 0; a < algorithms.size(); ++a)
-    script += fmt::format("  \"{}.dat\" index {} using 1:2 with points lt {} ps 1.6 title \"{}\", \\\n", stem, a, a + 1,
-                          gnuplot_quote(algorithms[a]));
+    script += fmt::format("  \"{}.dat\" index {} using 1:2 with points lt {} ps 1.6 title {}, \\\n", stem, a, a + 1,
+                          legend[a]);
   for (std::size_t a = 0; a < algorithms.size(); ++a)
     script += fmt::format("  \"{}.dat\" index {} using 1:2:3 with labels left offset 0.7,-0.5 font \"Sans,7\" tc rgb \"#777777\" notitle, \\\n",
                           stem, a);
   const std::size_t f = algorithms.size();
   script += fmt::format("  \"{}.dat\" index {} using 1:2 with steps lc rgb \"black\" dt 2 lw 1.5 title \"Pareto front\", \\\n", stem, f);
   script += fmt::format("  \"{}.dat\" index {} using 4:5:3 with labels left font \"Sans Bold,8\" notitle\n", stem, f);
+  if (Status s = write_file_atomically(folder / (stem + ".txt"), strings.data()); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
   if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();

@@ -1,6 +1,7 @@
 #include "harness/report/report_page.h"
 
 #include "harness/accuracy/accuracy_output.h"
+#include "harness/results/markdown_text.h"
 
 #include <fmt/core.h>
 
@@ -17,8 +18,8 @@ std::string grid_section(const GridFigures& g) {
     over += c.failed.empty() && !c.within_budget ? 1 : 0;
     failed += c.failed.empty() ? 0 : 1;
   }
-  out += fmt::format("## Frame budget: {}\n\nSource: `{}`. Budget {:g} ms per frame; {} of {} cells over it{}.\n\n",
-                     grid.case_name, grid.file, grid.budget_ms, over, grid.cells.size(),
+  out += fmt::format("## Frame budget: {}\n\nSource: {}. Budget {:g} ms per frame; {} of {} cells over it{}.\n\n",
+                     markdown_cell(grid.case_name), markdown_cell(grid.file), grid.budget_ms, over, grid.cells.size(),
                      failed > 0 ? fmt::format(", {} failed (`grid --timeout`)", failed) : std::string());
   out += fmt::format("![worst frame per cell against the budget]({})\n\n", g.heat_map);
 
@@ -39,7 +40,7 @@ std::string grid_section(const GridFigures& g) {
       std::string text = " |";
       for (const ReportCell& c : grid.cells)
         if (c.prefracture == p && c.runtime == r)
-          text = !c.failed.empty() ? fmt::format(" **{} !** |", c.failed)
+          text = !c.failed.empty() ? fmt::format(" **{} !** |", markdown_cell(c.failed))
                  : c.within_budget ? fmt::format(" {:.2f} |", c.worst_frame_ms)
                                    : fmt::format(" **{:.2f} !** |", c.worst_frame_ms);
       out += text;
@@ -55,7 +56,7 @@ std::string grid_section(const GridFigures& g) {
   for (std::size_t k = 0; k < cell.sample_stages_ms.size(); ++k) out += "---:|";
   out += "\n";
   for (const auto& [stage, ms] : cell.stages_ms) {
-    out += fmt::format("| {} | {:.3f} |", stage, ms);
+    out += fmt::format("| {} | {:.3f} |", markdown_cell(stage), ms);
     for (const StageTimes& run : cell.sample_stages_ms) {
       double value = 0.0;
       for (const auto& [name, v] : run)
@@ -69,10 +70,10 @@ std::string grid_section(const GridFigures& g) {
 }
 
 std::string accuracy_section(const AccuracyFigures& a) {
-  std::string out = fmt::format("## Accuracy against time\n\nSource: `{}`.\n\n", a.accuracy->file);
+  std::string out = fmt::format("## Accuracy against time\n\nSource: {}.\n\n", markdown_cell(a.accuracy->file));
   for (const ParetoFigure& f : a.charts)
-    out += fmt::format("### {}: {}\n\n![{} time against error on {}]({})\n\n", f.family, f.case_name, f.family,
-                       f.case_name, f.image);
+    out += fmt::format("### {}: {}\n\n![{} time against error on {}]({})\n\n", markdown_cell(f.family),
+                       markdown_cell(f.case_name), markdown_cell(f.family), markdown_cell(f.case_name), f.image);
   std::string tables = accuracy_to_markdown(a.accuracy->points);
   // One heading level down inside the report.
   std::string shifted;

@@ -1,6 +1,7 @@
 #include "harness/report/stage_bars_plot.h"
 
 #include "harness/report/gnuplot_runner.h"
+#include "harness/report/gnuplot_text.h"
 #include "harness/output/atomic_file.h"
 
 #include <fmt/core.h>
@@ -24,9 +25,7 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
   if (stages.empty()) stages = cell.stages_ms;
   // One row per bar, one column per stage (the median's stage order); a stage missing from a
   // repetition counts 0.
-  std::string data = "# bar";
-  for (const auto& [stage, ms] : stages) data += " " + stage;
-  data += "\n";
+  std::string data = "# bar, then one column per stage (names in the .txt file beside this one)\n";
   const auto row = [&](const std::string& label, const StageTimes& times) {
     data += "\"" + label + "\"";
     for (const auto& [stage, ignored] : stages) {
@@ -42,12 +41,18 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
 
   const std::string image = stem + ".png";
   const std::string over = frames > 0 ? fmt::format("summed over {} frames", frames) : "summed over the frames";
+  // Names from the results file (case, fracturer, stress model, stages) are data (gnuplot_text.h).
+  GnuplotStrings strings;
+  const std::string title = strings.add(fmt::format("{} cell {} x {} ({}{}): time per stage, {}", case_name,
+                                                    cell.prefracture, cell.runtime, cell.fracturer,
+                                                    cell.stress.empty() ? "" : ", " + cell.stress, over));
+  std::vector<std::string> legend;
+  for (const auto& [stage, ms] : stages) legend.push_back(strings.add(fmt::format("{} ({:.3g} ms)", stage, ms)));
   std::string script;
   script += "set terminal pngcairo noenhanced size 900,520 font \"Sans,10\"\n";
   script += fmt::format("set output \"{}\"\n", image);
-  script += fmt::format("set title \"{} cell {} x {} ({}{}): time per stage, {}\"\n", gnuplot_quote(case_name),
-                        cell.prefracture, cell.runtime, gnuplot_quote(cell.fracturer),
-                        cell.stress.empty() ? "" : ", " + gnuplot_quote(cell.stress), over);
+  script += strings.load(stem + ".txt");
+  script += fmt::format("set title {}\n", title);
   script += "set ylabel \"time (ms)\"\nset yrange [0:*]\nset grid ytics\n";
   script += "set style data histograms\nset style histogram rowstacked\nset style fill solid 0.85 border -1\n";
   script += "set boxwidth 0.6\nset key outside right top vertical title \"stage (median)\"\nset xtics scale 0\n";
@@ -57,9 +62,10 @@ Result<std::string> plot_stage_bars(const ReportCell& cell, const std::string& c
   // The legend gives each stage's median: a stage far smaller than the largest is a sliver in the bars.
   script += "plot";
   for (std::size_t i = 0; i < stages.size(); ++i)
-    script += fmt::format("{} \"{}.dat\" using {}{} title \"{} ({:.3g} ms)\"", i ? ", \\\n    " : "", stem, i + 2,
-                          i ? "" : ":xtic(1)", gnuplot_quote(stages[i].first), stages[i].second);
+    script += fmt::format("{} \"{}.dat\" using {}{} title {}", i ? ", \\\n    " : "", stem, i + 2,
+                          i ? "" : ":xtic(1)", legend[i]);
   script += "\n";
+  if (Status s = write_file_atomically(folder / (stem + ".txt"), strings.data()); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();
   if (Status s = run_gnuplot(folder, stem + ".gp"); !s) return s.error();

@@ -163,7 +163,7 @@ HazardResult run_fracture_hazard(const FractureHazard& h, const std::string& alg
   r.kind = "fracture";
   Result<std::unique_ptr<Fracturer>> fracturer = registries.fracturers.create(algorithm);
   if (!fracturer) {
-    r.outcome = HazardOutcome::rejected_input;
+    r.outcome = refusal_outcome(fracturer.error());
     r.detail = fracturer.error().message;
     return r;
   }
@@ -175,7 +175,7 @@ HazardResult run_fracture_hazard(const FractureHazard& h, const std::string& alg
   }
   Result<std::vector<Fragment>> first = run_once(h, **fracturer, solid);
   if (!first) {
-    r.outcome = HazardOutcome::rejected_input;
+    r.outcome = refusal_outcome(first.error());
     r.detail = first.error().message;
     return r;
   }

@@ -2,6 +2,10 @@
 
 namespace shatter {
 
+HazardOutcome refusal_outcome(const Error& error) {
+  return error.cause == ErrorCause::algorithm_fault ? HazardOutcome::invalid_output : HazardOutcome::rejected_input;
+}
+
 std::string_view outcome_tag(HazardOutcome outcome) {
   switch (outcome) {
     case HazardOutcome::valid: return "VALID";

@@ -2,6 +2,8 @@
 /// The verdict of one hazard case on one algorithm (docs/stability.md): one outcome tag, the failed
 /// check or the refusal message, and the worst error figure.
 
+#include "algorithms/core/result.h"
+
 #include <nlohmann/json.hpp>
 
 #include <string>
@@ -17,6 +19,10 @@ enum class HazardOutcome {
   crash,           ///< the isolated run died (signal, abort, sanitizer) or exited without a verdict
   timeout,         ///< the isolated run passed its time limit and was killed
 };
+
+/// The outcome of an algorithm's error: rejected_input for a refusal, invalid_output for a fault the
+/// host caught (an exception, a null, a result that failed the output checks; ErrorCause).
+HazardOutcome refusal_outcome(const Error& error);
 
 /// "VALID", "INVALID_OUTPUT", "REJECTED_INPUT", "CRASH" or "TIMEOUT".
 std::string_view outcome_tag(HazardOutcome outcome);

@@ -113,14 +113,14 @@ HazardResult run_stress_hazard(const StressHazard& h, const std::string& model, 
   r.fragments = h.graph.node_count();
   Result<std::unique_ptr<StressModel>> m = registries.stress_models.create(model);
   if (!m) {
-    r.outcome = HazardOutcome::rejected_input;
+    r.outcome = refusal_outcome(m.error());
     r.detail = m.error().message;
     return r;
   }
   const Material material;
   Result<PropagationResult> first = propagate(**m, h.graph, h.loads, material);
   if (!first) {
-    r.outcome = HazardOutcome::rejected_input;
+    r.outcome = refusal_outcome(first.error());
     r.detail = first.error().message;
     return r;
   }

@@ -31,6 +31,7 @@ const std::vector<std::vector<std::string>>& layers() {
       {"algorithms/fracture", "algorithms/bonds", "algorithms/repair", "algorithms/assets"},
       {"algorithms/stress"},
       {"algorithms/registry"},
+      {"harness/signals"},
       {"harness/limits.h", "harness/output", "harness/process", "harness/plugins"},
       {"harness/cases", "harness/metrics"},
       {"harness/results"},

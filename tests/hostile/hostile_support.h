@@ -51,6 +51,19 @@ inline int partials_in(const std::filesystem::path& dir) {
   return n;
 }
 
+/// True when process `pid` holds open an unnamed file (O_TMPFILE) of the folder `dir`: the kernel
+/// names its link in /proc "DIR/#INODE (deleted)".
+inline bool writing_unnamed_file(pid_t pid, const std::filesystem::path& dir) {
+  std::error_code ec;
+  const std::string prefix = std::filesystem::canonical(dir, ec).string() + "/#";
+  for (const auto& e : std::filesystem::directory_iterator("/proc/" + std::to_string(pid) + "/fd", ec)) {
+    std::error_code link_ec;
+    const std::string target = std::filesystem::read_symlink(e.path(), link_ec).string();
+    if (!link_ec && target.rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
 /// Waits up to `limit` for `ready()` to become true, polling every millisecond.
 template <class Ready>
 bool wait_until(Ready ready, std::chrono::milliseconds limit = std::chrono::milliseconds(60000)) {

@@ -6,7 +6,9 @@
 #include "tests/support/cli_runner.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <string>
 
 using namespace shatter;
@@ -82,4 +84,71 @@ TEST_CASE("no shell: instruction counting passes a hostile cache folder to valgr
   CHECK(fs::exists(dir / "g.json"));
 #endif
   for (const char* planted : {"PWNED", "PWNED2", "PWNED3"}) CHECK_FALSE(fs::exists(dir / planted));
+}
+
+TEST_CASE("no shell: report draws names that hold backquotes, gnuplot commands, newlines and quotes as text",
+          "[hostile][no-shell][cli]") {
+  const fs::path dir = hostile_scratch("report_names");
+  const CliRun g = run_cli_argv({"grid", "--case", "building", "--prefracture", "10", "--runtime", "5",
+                                 "--repetitions", "1", "--frames", "2", "--no-cache", "--json",
+                                 (dir / "grid.json").string()});
+  INFO(g.err);
+  REQUIRE(g.exit_code == 0);
+  // Names a results file could hold: a shell command in backquotes, a gnuplot `system` line after a
+  // newline, a macro, quotes that would end a gnuplot string, and a Markdown row break.
+  const std::string touch = "touch " + (dir / "PWNED").string();
+  const std::vector<std::string> names = {
+      "wall`" + touch + "`", "a\nsystem(\"" + touch + "2\")\nb", "x\" . system('" + touch + "3') . \"",
+      "@macro \\\" `" + touch + "4` |col| <script>"};
+  nlohmann::json grid = nlohmann::json::parse(file_bytes(dir / "grid.json"));
+  grid["case"]["name"] = names[0];
+  for (auto& cell : grid["cells"]) {
+    cell["fracturer"] = names[1];
+    cell["stress"] = names[2];
+    nlohmann::json stages = nlohmann::json::object();
+    for (auto& [stage, ms] : cell["stages_ms"].items()) stages[stage + names[3]] = ms;
+    cell["stages_ms"] = stages;
+    for (auto& sample : cell["samples"]) {
+      nlohmann::json sample_stages = nlohmann::json::object();
+      for (auto& [stage, ms] : sample["stages_ms"].items()) sample_stages[stage + names[3]] = ms;
+      sample["stages_ms"] = sample_stages;
+    }
+  }
+  put_file(dir / "hostile-grid.json", grid.dump());
+  nlohmann::json accuracy = {{"kind", "accuracy"}, {"points", nlohmann::json::array()}};
+  for (std::size_t i = 0; i < names.size(); ++i)
+    accuracy["points"].push_back({{"family", "stress"}, {"case", names[(i + 1) % names.size()]}, {"algorithm", names[i]},
+                                  {"knob", names[(i + 2) % names.size()]}, {"time_ms", 1.0 + static_cast<double>(i)},
+                                  {"error", 1e-3 / (1.0 + static_cast<double>(i))}, {"pareto", i % 2 == 0}});
+  put_file(dir / "hostile-accuracy.json", accuracy.dump());
+
+  const fs::path out = dir / "report";
+  const CliRun r = run_cli_argv({"report", (dir / "hostile-grid.json").string(), (dir / "hostile-accuracy.json").string(),
+                                 "--out", out.string()},
+                                dir);
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  for (const char* planted : {"PWNED", "PWNED2", "PWNED3", "PWNED4"}) CHECK_FALSE(fs::exists(dir / planted));
+  // No script holds any of the names' text; every image was drawn.
+  int scripts = 0, images = 0;
+  for (const auto& e : fs::directory_iterator(out)) {
+    const std::string bytes = file_bytes(e.path());
+    if (e.path().extension() == ".gp") {
+      ++scripts;
+      CHECK(bytes.find("touch") == std::string::npos);
+      CHECK(bytes.find('`') == std::string::npos);
+      CHECK(bytes.find("system") == std::string::npos);
+    }
+    if (e.path().extension() == ".png") {
+      ++images;
+      CHECK(bytes.size() > 1000);
+    }
+  }
+  CHECK(scripts >= 3);  // heat map, stage bars, one Pareto chart per case
+  CHECK(images == scripts);
+  // The Markdown page keeps every table row on one line and opens no HTML element.
+  const std::string page = file_bytes(out / "report.md");
+  CHECK(page.find("<script>") == std::string::npos);
+  CHECK(page.find("&lt;script&gt;") != std::string::npos);
+  CHECK(page.find("\\|col\\|") != std::string::npos);
 }

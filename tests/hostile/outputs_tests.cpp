@@ -136,7 +136,7 @@ TEST_CASE("outputs: two outputs that resolve to one file are refused", "[hostile
   CHECK(check_outputs({{"--json", dir / "a.json"}, {"--junit", dir / "b.xml"}}).ok());
 }
 
-TEST_CASE("outputs: kill -9 during a file write leaves the old file, the next write removes the temporary",
+TEST_CASE("outputs: kill -9 during a file write leaves the old file and nothing beside it",
           "[hostile][outputs][kill]") {
   const fs::path dir = hostile_scratch("kill_file");
   const fs::path target = dir / "grid.json";
@@ -149,16 +149,30 @@ TEST_CASE("outputs: kill -9 during a file write leaves the old file, the next wr
       (void)write_file_atomically(target, big);
       ::_exit(0);
     }
-    const bool caught = wait_until([&] { return partials_in(dir) > 0; });
+    // The write is in progress once the child holds an unnamed file of the folder open.
+    const bool caught = wait_until([&] { return writing_unnamed_file(pid, dir); });
     kill_and_reap(pid);
     REQUIRE(caught);
     CHECK(file_bytes(target) == "old results");  // never a partial file at the target
-    CHECK(partials_in(dir) == 1);
+    CHECK(names_in(dir) == std::set<std::string>{"grid.json"});
     REQUIRE(write_file_atomically(target, "new results").ok());
     CHECK(partials_in(dir) == 0);
     CHECK(file_bytes(target) == "new results");
     put_file(target, "old results");
   }
+}
+
+TEST_CASE("outputs: a user's file or folder named like a temporary is never removed", "[hostile][outputs]") {
+  const fs::path dir = hostile_scratch("lookalike");
+  const fs::path file_twin = put_file(dir / ".grid.json.partial-0123abcd", "my notes");
+  const fs::path folder_twin = dir / ".out.partial-89abcdef";
+  fs::create_directories(folder_twin);
+  put_file(folder_twin / "thesis.txt", "chapter 1");
+  REQUIRE(write_file_atomically(dir / "grid.json", "results").ok());
+  REQUIRE(write_folder_atomically(dir / "out", pieces(2, "new")).ok());
+  CHECK(file_bytes(file_twin) == "my notes");
+  CHECK(file_bytes(folder_twin / "thesis.txt") == "chapter 1");
+  CHECK(file_bytes(dir / "grid.json") == "results");
 }
 
 TEST_CASE("outputs: kill -9 during a folder write leaves the old folder, the next write removes the staging",

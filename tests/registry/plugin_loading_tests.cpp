@@ -114,7 +114,8 @@ TEST_CASE("plugins: SHATTERBENCH_PLUGIN_PATH loads files and folders, and a grid
 TEST_CASE("plugins: refused with one line naming the plugin", "[plugins]") {
   SECTION("built against another version") {
     const std::string path = plugin("wrong_abi");
-    check_refused(test::run_cli_argv({"--plugin", path, "list"}), "plugin " + path + ": built against shatterbench 9.9.0");
+    // The ABI is read first: a descriptor of another ABI is not read further (its version is a pointer).
+    check_refused(test::run_cli_argv({"--plugin", path, "list"}), "plugin " + path + ": built for plugin ABI 999");
   }
   SECTION("a name two plugins register: both paths named") {
     const std::string first = plugin("shards");
