@@ -1,5 +1,7 @@
 #include "algorithms/assets/assimp_scene_mesh.h"
 
+#include "algorithms/core/asset_reference.h"
+
 #include <assimp/material.h>
 #include <assimp/scene.h>
 
@@ -62,6 +64,9 @@ class SlotMaker {
  public:
   explicit SlotMaker(const aiScene& scene) : scene_(scene) {}
 
+  /// The first texture reference refused (check_reference_text), or empty.
+  std::string refused;
+
   /// The slot of material `index`, made on first use.
   std::int32_t slot_of(unsigned index, std::vector<MaterialSlot>& slots) {
     const auto found = slot_.find(index);
@@ -96,8 +101,12 @@ class SlotMaker {
         material.GetTexture(aiTextureType_DIFFUSE, 0, &path) != AI_SUCCESS)
       return;
     const std::string file(path.C_Str());
-    if (!file.starts_with('*')) slot.base_color_texture = file;
     const aiTexture* texture = scene_.GetEmbeddedTexture(path.C_Str());
+    // A texture file the asset names stays a reference inside its folder (asset_reference.h): it is
+    // written into the fragments' files, so a path outside would travel with them.
+    if (!file.starts_with('*') && texture == nullptr)
+      if (Status s = check_reference_text(file, "texture"); !s && refused.empty()) refused = s.error().message;
+    if (!file.starts_with('*')) slot.base_color_texture = file;
     if (texture == nullptr || texture->mHeight != 0 || texture->pcData == nullptr) return;  // not embedded, or raw texels
     auto& image = image_[texture];
     if (!image) {
@@ -204,6 +213,7 @@ Result<Mesh> mesh_from_assimp_scene(const aiScene& scene, const std::string& nam
       }
     }
   }
+  if (!slots.refused.empty()) return Error{name + ": " + slots.refused};
   if (mesh.triangles.empty()) return Error{name + ": the scene holds no triangles"};
   return mesh;
 }

@@ -1,5 +1,7 @@
 #include "algorithms/assets/read_asset.h"
 
+#include "algorithms/assets/confined_io_system.h"
+
 #include "algorithms/assets/assimp_scene_mesh.h"
 #include "algorithms/core/bounded_read.h"
 #include "algorithms/core/mesh_io.h"
@@ -323,9 +325,15 @@ Result<Mesh> read_asset(const std::filesystem::path& path, const MeshReadLimits&
     if (const std::string problem = gltf_json_problem(*text); !problem.empty()) return Error{path.string() + ": " + problem};
   }
   Assimp::Importer importer;
-  if (!recognised(importer, ext, path.string(), importer.GetIOHandler()))
+  // Every file assimp opens goes through the confinement (the importer owns and deletes it).
+  auto* io = new ConfinedIOSystem(path, limits.max_file_bytes);
+  importer.SetIOHandler(io);
+  if (!recognised(importer, ext, path.string(), io))
     return Error{path.string() + ": not a valid ." + ext + " file (assimp's reader for ." + ext + " does not recognise it)"};
-  return import_scene(importer, path.string(), limits, [&] { return importer.ReadFile(path.string(), kImportFlags); });
+  Result<Mesh> mesh = import_scene(importer, path.string(), limits, [&] { return importer.ReadFile(path.string(), kImportFlags); });
+  // A refused reference fails the import, whatever assimp made of the asset without it.
+  if (!io->refusal().empty()) return Error{path.string() + ": " + io->refusal()};
+  return mesh;
 }
 
 Result<Mesh> read_asset_bytes(std::span<const std::uint8_t> bytes, std::string_view extension, const std::string& name,
@@ -345,13 +353,20 @@ Result<Mesh> read_asset_bytes(std::span<const std::uint8_t> bytes, std::string_v
       return Error{name + ": " + problem};
   }
   Assimp::Importer importer;
+  // assimp reads the memory through its own wrapper of the importer's file access, which would open
+  // any other name the asset gives: that access opens none (the importer owns and deletes it).
+  auto* files = new ConfinedIOSystem({}, limits.max_file_bytes);
+  importer.SetIOHandler(files);
   {
     Assimp::MemoryIOSystem io(bytes.data(), bytes.size(), importer.GetIOHandler());
     if (!recognised(importer, hint, std::string(AI_MEMORYIO_MAGIC_FILENAME) + "." + hint, &io))
       return Error{name + ": not a valid ." + hint + " file (assimp's reader for ." + hint + " does not recognise it)"};
   }
-  return import_scene(importer, name, limits,
-                      [&] { return importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, hint.c_str()); });
+  Result<Mesh> mesh = import_scene(importer, name, limits, [&] {
+    return importer.ReadFileFromMemory(bytes.data(), bytes.size(), kImportFlags, hint.c_str());
+  });
+  if (!files->refusal().empty()) return Error{name + ": " + files->refusal()};
+  return mesh;
 }
 
 }  // namespace shatter

@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 #include <string_view>
+#include <unordered_map>
 
 namespace shatter {
 Result<std::vector<MaterialSlot>> read_mtl(const std::filesystem::path& path, const MeshReadLimits& limits) {
@@ -16,6 +18,8 @@ Result<std::vector<MaterialSlot>> read_mtl(const std::filesystem::path& path, co
   const auto fail = [&](const std::string& what) { return Error{file + ":" + std::to_string(lines.line()) + ": " + what}; };
 
   std::vector<MaterialSlot> slots;
+  std::unordered_map<std::string, std::size_t> index;  // name -> its slot (linear in the definitions)
+  std::size_t current = 0;                              // the slot the statements after `newmtl` set
   while (lines.next()) {
     const auto& tokens = lines.tokens();
     const std::string_view key = tokens[0];
@@ -36,15 +40,16 @@ Result<std::vector<MaterialSlot>> read_mtl(const std::filesystem::path& path, co
       if (tokens.size() < 2) return fail("'newmtl' without a material name");
       MaterialSlot slot;
       slot.name = joined_tokens(tokens, 1);
-      const auto same = std::find_if(slots.begin(), slots.end(), [&](const MaterialSlot& s) { return s.name == slot.name; });
-      if (same != slots.end()) slots.erase(same);  // the later definition wins
-      slots.push_back(std::move(slot));
+      const auto [found, added] = index.try_emplace(slot.name, slots.size());
+      if (added) slots.push_back(std::move(slot));
+      else slots[found->second] = std::move(slot);  // the later definition wins, in the first one's place
+      current = found->second;
       continue;
     }
     const bool known = key == "Kd" || key == "d" || key == "Tr" || key == "map_Kd";
     if (!known) continue;
     if (slots.empty()) return fail("'" + std::string(key) + "' before the first 'newmtl'");
-    MaterialSlot& slot = slots.back();
+    MaterialSlot& slot = slots[current];
     if (key == "Kd") {
       Result<std::vector<double>> c = numbers(1, 3);
       if (!c) return c.error();

@@ -9,6 +9,7 @@
 /// triangles the polygon is split into (a triangle corner takes the first polygon corner with its
 /// vertex); material libraries are read by material_library.h.
 
+#include "algorithms/core/asset_reference.h"
 #include "algorithms/core/bounded_read.h"
 #include "algorithms/core/material_library.h"
 #include "algorithms/core/mesh_io.h"
@@ -20,6 +21,8 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace shatter {
@@ -111,6 +114,8 @@ Result<Corner> parse_corner(std::string_view token, const std::array<std::int64_
 struct Libraries {
   std::vector<std::string> names;     ///< as the `mtllib` statements wrote them
   std::vector<MaterialSlot> slots;    ///< every library's materials, texture paths relative to the OBJ's folder
+  std::unordered_set<std::string> read;  ///< canonical paths already read (a library named again is not read again)
+  std::uintmax_t bytes = 0;           ///< bytes of the libraries read
 };
 
 }  // namespace
@@ -133,6 +138,7 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
   std::vector<Vec2> uvs;
   Libraries libraries;
   std::vector<std::string> used;        // material names in the order `usemtl` first gave them
+  std::unordered_map<std::string, std::int32_t> used_index;  // name -> its index in `used`
   std::vector<std::int64_t> used_line;  // line of each name's first `usemtl`
   std::int32_t material = -1;
   const auto past_limit = [&](std::size_t count) { return static_cast<std::int64_t>(count) >= limits.max_vertices; };
@@ -210,9 +216,9 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
     } else if (key == "usemtl") {
       if (tokens.size() < 2) return fail(line, "'usemtl' without a material name");
       const std::string name = joined_tokens(tokens, 1);
-      const auto found = std::find(used.begin(), used.end(), name);
-      material = static_cast<std::int32_t>(found - used.begin());
-      if (found == used.end()) {
+      const auto [found, added] = used_index.try_emplace(name, static_cast<std::int32_t>(used.size()));
+      material = found->second;
+      if (added) {
         used.push_back(name);
         used_line.push_back(line);
       }
@@ -224,17 +230,23 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
       if (tokens.size() > 2 && !std::filesystem::exists(path.parent_path() / names[0], ec))
         names.assign(tokens.begin() + 1, tokens.end());
       for (const std::string& name : names) {
-        const std::filesystem::path library = path.parent_path() / name;
-        const std::filesystem::file_status status = std::filesystem::status(library, ec);
-        if (!std::filesystem::exists(status))
-          return fail(line, "material library '" + name + "' not found (looked for " + library.string() + ")");
-        // Only a file: a FIFO or a device named by a hostile OBJ is never opened.
-        if (!std::filesystem::is_regular_file(status))
-          return fail(line, "material library '" + name + "' is not a regular file");
-        Result<std::vector<MaterialSlot>> slots = read_mtl(library, limits);
+        // Only a regular file inside the OBJ's folder (asset_reference.h), each read once, all of them
+        // together within one mesh file's size limit.
+        Result<std::filesystem::path> library =
+            resolve_reference(path.parent_path(), name, limits.max_file_bytes, "material library");
+        if (!library) return fail(line, library.error().message);
+        if (!libraries.read.insert(library->string()).second) continue;
+        libraries.bytes += std::filesystem::file_size(*library, ec);
+        if (libraries.bytes > limits.max_file_bytes)
+          return fail(line, "material libraries: more than the limit of " + std::to_string(limits.max_file_bytes) +
+                                " bytes in all");
+        Result<std::vector<MaterialSlot>> slots = read_mtl(*library, limits);
         if (!slots) return fail(line, "material library: " + slots.error().message);
         const std::filesystem::path folder = std::filesystem::path(name).parent_path();
         for (MaterialSlot& slot : *slots) {
+          if (!slot.base_color_texture.empty())
+            if (Status t = check_reference_text(slot.base_color_texture, "texture"); !t)
+              return fail(line, library->string() + ": " + t.error().message);
           if (!slot.base_color_texture.empty() && !folder.empty())
             slot.base_color_texture = (folder / slot.base_color_texture).lexically_normal().string();
           libraries.slots.push_back(std::move(slot));
@@ -251,19 +263,20 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
   // Materials: a slot per name used, from the libraries when the file names any (an unknown name is
   // then an error), by name alone when it names none; "default" for faces before the first usemtl.
   std::vector<MaterialSlot> slots;
+  std::unordered_map<std::string, std::size_t> defined;  // name -> its last definition in the libraries
+  for (std::size_t k = 0; k < libraries.slots.size(); ++k) defined[libraries.slots[k].name] = k;
   for (std::size_t m = 0; m < used.size(); ++m) {
     MaterialSlot slot;
     slot.name = used[m];
     if (!libraries.names.empty()) {
       // The last definition wins, as in one library.
-      const auto found = std::find_if(libraries.slots.rbegin(), libraries.slots.rend(),
-                                      [&](const MaterialSlot& s) { return s.name == used[m]; });
-      if (found == libraries.slots.rend()) {
+      const auto found = defined.find(used[m]);
+      if (found == defined.end()) {
         std::string names;
         for (const std::string& n : libraries.names) names += (names.empty() ? "" : "', '") + n;
         return fail(used_line[m], "material '" + used[m] + "' not in '" + names + "'");
       }
-      slot = *found;
+      slot = libraries.slots[found->second];
     }
     slots.push_back(std::move(slot));
   }
@@ -302,6 +315,7 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
   mesh.triangles.reserve(static_cast<std::size_t>(triangles));
   if (stride > 0) mesh.attributes.corners.reserve(static_cast<std::size_t>(triangles) * 3 * stride);
   std::vector<Triangle> made;
+  std::unordered_map<std::int32_t, std::size_t> corner_of;
   for (std::size_t f = 0; f + 1 < faces.first.size(); ++f) {
     const std::size_t first = faces.first[f];
     const std::span<const std::int32_t> poly(faces.corners.data() + first, faces.first[f + 1] - first);
@@ -311,13 +325,21 @@ Result<Mesh> read_obj(const std::filesystem::path& path, const MeshReadLimits& l
                                        std::to_string(vertex_count) + " vertices)");
     made.clear();
     if (Status s = triangulate_polygon(mesh.vertices, poly, made); !s) return fail(faces.line[f], "face: " + s.error().message);
+    // Each triangle corner's place in the polygon (its first, when a vertex repeats): a search for the
+    // few corners of an ordinary face, a table for a large polygon (linear in its corners).
+    if (stride > 0 && poly.size() > 16) {
+      corner_of.clear();
+      for (std::size_t k = poly.size(); k-- > 0;) corner_of[poly[k]] = first + k;
+    }
     for (const Triangle& t : made) {
       mesh.add_triangle(t[0], t[1], t[2], faces.tag[f]);
       if (!mesh.attributes.slots.empty())
         mesh.attributes.materials.push_back(faces.material[f] >= 0 ? faces.material[f] : default_slot);
       if (stride == 0) continue;
       for (const std::int32_t v : t) {
-        const std::size_t c = first + static_cast<std::size_t>(std::find(poly.begin(), poly.end(), v) - poly.begin());
+        const std::size_t c = poly.size() > 16
+                                  ? corner_of.at(v)
+                                  : first + static_cast<std::size_t>(std::find(poly.begin(), poly.end(), v) - poly.begin());
         CornerValues& out = mesh.attributes.corners;
         if (layout.normals) {
           const Vec3& n = normals[static_cast<std::size_t>(faces.normals[c])];

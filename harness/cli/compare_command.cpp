@@ -26,7 +26,8 @@ struct CompareCommandOptions {
 
 int run_compare(const CompareCommandOptions& o) {
   if (Status s = check_compare_options(o.compare); !s) return fail_input(s.error().message);
-  if (Status s = check_outputs({{"--markdown", o.markdown}, {"--junit", o.junit}}); !s) return fail_input(s.error().message);
+  if (Status s = check_outputs({{"--markdown", o.markdown}, {"--junit", o.junit}}, baseline_folders(), {o.base, o.next}); !s)
+    return fail_input(s.error().message);
   Result<StoredGrid> base = read_grid_results(o.base);
   if (!base) return fail_input(base.error().message);
   Result<StoredGrid> next = read_grid_results(o.next);

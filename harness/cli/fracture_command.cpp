@@ -33,7 +33,8 @@ struct FractureOptions {
 };
 
 int run_fracture(const FractureOptions& o, const Registries& registries) {
-  if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
+  if (Status s = check_outputs({{"--out", o.out, true}}, baseline_folders(), {o.mesh}); !s)
+    return fail_input(s.error().message);
   Result<Solid> solid = load_solid(o.mesh, o.no_repair ? SolidRepair::refuse : SolidRepair::repair,
                                    CutFaceOptions{.uv_scale = o.cap_uv_scale, .interior = {}});
   if (!solid) return fail_input(solid.error().message);

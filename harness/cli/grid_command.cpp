@@ -247,7 +247,10 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
                                              {"--json (its CSV twin)", csv_path, false, o.update_baseline},
                                              {"--gbench", o.gbench, false, false},
                                              {"--junit", o.junit, false, false}};
-  if (Status s = check_outputs(outputs, baseline_folders(o.baseline_dir)); !s) return fail_input(s.error().message);
+  // A case named by a file is an input no output may replace (a built-in name is no file here).
+  std::vector<std::filesystem::path> inputs;
+  if (std::error_code ec; std::filesystem::is_regular_file(o.case_name, ec)) inputs.emplace_back(o.case_name);
+  if (Status s = check_outputs(outputs, baseline_folders(o.baseline_dir), inputs); !s) return fail_input(s.error().message);
 
   std::unique_ptr<PrefractureCache> cache;
   if (!o.no_cache) {

@@ -23,7 +23,9 @@ struct MergeOptions {
 int run_merge(const MergeOptions& o) {
   std::filesystem::path csv = o.out;
   csv.replace_extension(".csv");
-  if (Status s = check_outputs({{"--out", o.out}, {"--out (its CSV twin)", csv}}); !s) return fail_input(s.error().message);
+  const std::vector<std::filesystem::path> inputs(o.parts.begin(), o.parts.end());
+  if (Status s = check_outputs({{"--out", o.out}, {"--out (its CSV twin)", csv}}, baseline_folders(), inputs); !s)
+    return fail_input(s.error().message);
   std::vector<StoredGrid> parts;
   for (const std::string& p : o.parts) {
     Result<StoredGrid> g = read_grid_results(p);

@@ -20,7 +20,9 @@ struct ReportOptions {
 };
 
 int run_report(const ReportOptions& o) {
-  if (Status s = check_outputs({{"--out", o.out, true}}); !s) return fail_input(s.error().message);
+  const std::vector<std::filesystem::path> results(o.files.begin(), o.files.end());
+  if (Status s = check_outputs({{"--out", o.out, true}}, baseline_folders(), results); !s)
+    return fail_input(s.error().message);
   Result<ReportInputs> inputs = read_report_inputs(o.files);
   if (!inputs) return fail_input(inputs.error().message);
   ChosenCell cell;

@@ -1,6 +1,7 @@
 #include "harness/output/output_targets.h"
 
 #include "harness/output/output_folder.h"
+#include "harness/output/own_output.h"
 
 #include <algorithm>
 #include <system_error>
@@ -12,11 +13,21 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// `path` made absolute, with symbolic links, `.` and `..` resolved as far as the path exists.
+/// `path` made absolute, with symbolic links, `.` and `..` resolved as far as the path exists. A link
+/// whose target does not exist yet is followed too (weakly_canonical stops at it), so two outputs that
+/// would be written through links into one new file are found to be one.
 fs::path resolved(const fs::path& path) {
   std::error_code ec;
-  fs::path p = fs::weakly_canonical(fs::absolute(path), ec);
-  return ec ? fs::absolute(path).lexically_normal() : p;
+  fs::path p = fs::absolute(path, ec);
+  for (int hops = 0; hops < 40; ++hops) {
+    std::error_code link_ec;
+    if (!fs::is_symlink(fs::symlink_status(p, link_ec)) || fs::exists(p, link_ec)) break;
+    const fs::path target = fs::read_symlink(p, link_ec);
+    if (link_ec) break;
+    p = target.is_absolute() ? target : p.parent_path() / target;
+  }
+  fs::path canonical = fs::weakly_canonical(p, ec);
+  return ec ? p.lexically_normal() : canonical;
 }
 
 /// True when `path` is `folder` or lies inside it (both resolved).
@@ -51,6 +62,9 @@ Status check_one(const OutputTarget& t, const fs::path& where, const std::vector
     const fs::file_status status = fs::status(t.path, ec);
     if (fs::exists(status) && !fs::is_regular_file(status))
       return Error{name + ": exists and is " + kind_of(status) + ", not a regular file: not replaced"};
+    if (fs::exists(status) && !is_own_output_file(t.path))
+      return Error{name + ": exists and is not a file shatterbench wrote: not replaced (name a new file, or move "
+                          "this one away first)"};
     if (t.path.filename().empty() || t.path.filename() == "." || t.path.filename() == "..")
       return Error{name + ": not a file name"};
   }
@@ -84,11 +98,20 @@ std::vector<fs::path> baseline_folders(const fs::path& extra) {
   return folders;
 }
 
-Status check_outputs(const std::vector<OutputTarget>& targets, const std::vector<fs::path>& protected_folders) {
+Status check_outputs(const std::vector<OutputTarget>& targets, const std::vector<fs::path>& protected_folders,
+                     const std::vector<fs::path>& inputs) {
   std::vector<std::pair<const OutputTarget*, fs::path>> seen;
   for (const OutputTarget& t : targets) {
     if (t.path.empty()) continue;
     const fs::path where = resolved(t.path);
+    for (const fs::path& input : inputs) {
+      if (input.empty()) continue;
+      const fs::path in = resolved(input);
+      if (!t.folder && (in == where || same_file(in, where)))
+        return Error{t.flag + ": " + t.path.string() + ": is also an input (" + input.string() + "): not replaced"};
+      if (t.folder && inside(in, where))
+        return Error{t.flag + ": " + t.path.string() + ": holds the input " + input.string() + ": not replaced"};
+    }
     if (Status s = check_one(t, where, protected_folders); !s) return s;
     for (const auto& [other, other_where] : seen) {
       if (!(where == other_where || same_file(where, other_where)) &&

@@ -2,7 +2,8 @@
 /// The checks every command runs on the files and folders it will write, before it starts work.
 ///
 /// One rule set for every output of every command (docs/stability.md, "Hostile input: outputs"):
-/// - an existing file target must be a regular file (a folder, device, FIFO or socket is refused);
+/// - an existing file target must be a regular file (a folder, device, FIFO or socket is refused)
+///   that shatterbench wrote, or empty (own_output.h): a file of the user's is never replaced;
 /// - an existing folder target must be empty or marked as shatterbench's own (output_folder.h);
 /// - two outputs of one command must not resolve to the same file (after symbolic links, `..` and
 ///   hard links), nor a file lie inside a folder output;
@@ -35,9 +36,11 @@ std::vector<std::filesystem::path> baseline_folders(const std::filesystem::path&
 Status check_outside_baselines(const std::string& flag, const std::filesystem::path& path,
                                const std::vector<std::filesystem::path>& protected_folders = baseline_folders());
 
-/// Checks `targets` against the rules above; the error names the flag, the path and the rule.
-/// Empty paths are skipped (an output that was not asked for).
+/// Checks `targets` against the rules above, and that none is one of `inputs` (the files the command
+/// reads: a file output that is an input, or a folder output that holds one, is refused); the error
+/// names the flag, the path and the rule. Empty paths are skipped (an output that was not asked for).
 Status check_outputs(const std::vector<OutputTarget>& targets,
-                     const std::vector<std::filesystem::path>& protected_folders = baseline_folders());
+                     const std::vector<std::filesystem::path>& protected_folders = baseline_folders(),
+                     const std::vector<std::filesystem::path>& inputs = {});
 
 }  // namespace shatter

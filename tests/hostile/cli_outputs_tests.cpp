@@ -76,6 +76,59 @@ TEST_CASE("cli outputs: targets that are not regular files or that two outputs s
   CHECK(names_in(dir) == std::set<std::string>{"fifo", "grid.json", "grid.csv"});
 }
 
+TEST_CASE("cli outputs: a file of the user's, an input, or one file through two links is never replaced",
+          "[hostile][outputs][cli]") {
+  const fs::path dir = hostile_scratch("cli_user_files");
+  const std::string tiny[] = {"--case", "building", "--prefracture", "10", "--runtime", "5", "--repetitions", "1",
+                              "--frames", "1", "--no-cache"};
+  const auto grid_with = [&](std::vector<std::string> extra) {
+    std::vector<std::string> args = {"grid"};
+    args.insert(args.end(), std::begin(tiny), std::end(tiny));
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_cli_argv(args);
+  };
+  // The CSV beside a --json target is an output too: a user's CSV there is refused, named.
+  put_file(dir / "mydata.csv", "x,y\n1,2\n");
+  require_refused(grid_with({"--json", (dir / "mydata.json").string()}), "mydata.csv");
+  CHECK(file_bytes(dir / "mydata.csv") == "x,y\n1,2\n");
+  CHECK_FALSE(fs::exists(dir / "mydata.json"));
+  // A file of the user's named as an output, of any command.
+  put_file(dir / "thesis.txt", "chapter one\n");
+  require_refused(grid_with({"--json", (dir / "thesis.txt").string()}), "not a file shatterbench wrote");
+  require_refused(grid_with({"--junit", (dir / "thesis.txt").string()}), "not a file shatterbench wrote");
+  small_grid(dir / "s0.json");
+  small_grid(dir / "s1.json", 20);
+  require_refused(run_cli_argv({"merge", (dir / "s0.json").string(), (dir / "s1.json").string(), "--out",
+                                (dir / "thesis.txt").string()}),
+                  "not a file shatterbench wrote");
+  require_refused(run_cli_argv({"accuracy", "--case", "cantilever", "--family", "stress", "--slabs", "8", "--json",
+                                (dir / "thesis.txt").string()}),
+                  "not a file shatterbench wrote");
+  require_refused(run_cli_argv({"compare", (dir / "s0.json").string(), (dir / "s0.json").string(), "--markdown",
+                                (dir / "thesis.txt").string()}),
+                  "not a file shatterbench wrote");
+  CHECK(file_bytes(dir / "thesis.txt") == "chapter one\n");
+  // An output that is one of the command's inputs.
+  const std::string s0 = file_bytes(dir / "s0.json");
+  require_refused(run_cli_argv({"merge", (dir / "s0.json").string(), (dir / "s1.json").string(), "--out",
+                                (dir / "s0.json").string()}),
+                  "is also an input");
+  require_refused(run_cli_argv({"compare", (dir / "s0.json").string(), (dir / "s1.json").string(), "--markdown",
+                                (dir / "s1.json").string()}),
+                  "is also an input");
+  CHECK(file_bytes(dir / "s0.json") == s0);
+  // Two outputs that are one new file through links (the links dangle until the file is written).
+  fs::create_symlink(dir / "one.json", dir / "a.json");
+  fs::create_symlink(dir / "one.json", dir / "b.xml");
+  require_refused(grid_with({"--json", (dir / "a.json").string(), "--junit", (dir / "b.xml").string()}), "--junit");
+  CHECK_FALSE(fs::exists(dir / "one.json"));
+  // The command's own earlier output is replaced.
+  const CliRun again = grid_with({"--json", (dir / "s0.json").string(), "--junit", (dir / "s0.xml").string()});
+  CHECK(again.exit_code == 0);
+  const CliRun third = grid_with({"--json", (dir / "s0.json").string(), "--junit", (dir / "s0.xml").string()});
+  CHECK(third.exit_code == 0);
+}
+
 TEST_CASE("cli outputs: a folder of the user's is never replaced by report or fracture, their own is",
           "[hostile][outputs][cli]") {
   const fs::path dir = hostile_scratch("cli_folders");
