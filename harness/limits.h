@@ -115,4 +115,13 @@ inline constexpr PhysicalRange kScaleRange{1e-6, 1e6, false, ""};
 /// that would be larger is not stored.
 inline constexpr std::uint64_t kMaxCacheEntryBytes = 1ULL << 30;
 
+/// Memory of the child process that imports an asset through assimp (harness/cases/isolated_import.h):
+/// its address space is limited to this (RLIMIT_AS), so a decompression bomb or a file that claims
+/// billions of elements ends that child, not the machine. assimp holds about 3 to 4 times the mesh
+/// it builds; a mesh at the reader limits (10 M triangles with attributes) needs about 2 GB.
+inline constexpr std::uint64_t kMaxImportMemoryBytes = 8ULL << 30;
+
+/// Wall time of one asset import through assimp, seconds: a million-triangle FBX or glTF takes a few.
+inline constexpr double kMaxImportSeconds = 120.0;
+
 }  // namespace shatter

@@ -1,6 +1,7 @@
 #include "harness/cases/case_mesh.h"
 
 #include "harness/cases/physical_range.h"
+#include "harness/cases/isolated_import.h"
 #include "harness/cases/prism_mesh.h"
 
 #include "algorithms/assets/read_asset.h"
@@ -206,7 +207,7 @@ Result<Mesh> build_case_mesh(const MeshSpec& spec, const std::string& what) {
     return make_tube(s->inner_radius, s->outer_radius, s->height, s->segments, s->center);
   if (const auto* s = std::get_if<PrismSpec>(&spec)) return make_prism(*s, what);
   const auto& file = std::get<MeshFileSpec>(spec);
-  Result<Mesh> mesh = read_asset(file.path);
+  Result<Mesh> mesh = read_asset_isolated(file.path);
   if (!mesh) return Error{fmt::format("{}: {}", what, mesh.error().message)};
   const Eigen::Matrix3d rotation = rotation_xyz_deg(file.rotate_deg);
   const bool identity =

@@ -1,6 +1,7 @@
 #include "harness/cases/load_solid.h"
 
 #include "algorithms/assets/read_asset.h"
+#include "harness/cases/isolated_import.h"
 #include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/representable_range.h"
 
@@ -42,7 +43,7 @@ Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair,
 }
 
 Result<Solid> load_solid(const std::filesystem::path& path, SolidRepair repair, const CutFaceOptions& cut) {
-  Result<Mesh> mesh = read_asset(path);
+  Result<Mesh> mesh = read_asset_isolated(path);
   if (!mesh) return mesh.error();
   return make_solid(std::move(*mesh), path.string(), repair, cut);
 }

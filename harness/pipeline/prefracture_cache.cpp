@@ -2,6 +2,7 @@
 
 #include "harness/plugins/plugin_loader.h"
 
+#include "algorithms/assets/mesh_codec.h"
 #include "algorithms/core/attribute_transfer.h"
 #include "harness/limits.h"
 #include "harness/output/atomic_file.h"
@@ -29,8 +30,9 @@ namespace shatter {
 namespace {
 
 // Version 2 ends every file with the FNV-1a hash of all bytes before it (a flipped bit is a miss);
-// version 3 stores each fragment's attributes and the solid's attributes are part of the key.
-constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '3'};
+// version 3 stores each fragment's attributes and the solid's attributes are part of the key; version
+// 4 stores each fragment's mesh in the form of algorithms/assets/mesh_codec.h, then its mass.
+constexpr char kMagic[8] = {'S', 'B', 'P', 'F', 'R', 'A', 'C', '4'};
 
 /// FNV-1a, 64 bit, fed field by field.
 class Fnv1a {
@@ -114,64 +116,8 @@ std::uint64_t key_hash(const Mesh& solid, const PrefractureKey& key) {
   return h.hash();
 }
 
-/// Appends raw bytes of trivially copyable values.
-class Writer {
- public:
-  template <class T>
-  void value(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    bytes(&v, sizeof v);
-  }
-  void bytes(const void* p, std::size_t n) { out_.append(static_cast<const char*>(p), n); }
-  void text(const std::string& s) {
-    value(static_cast<std::uint64_t>(s.size()));
-    bytes(s.data(), s.size());
-  }
-  [[nodiscard]] const std::string& data() const { return out_; }
-
- private:
-  std::string out_;
-};
-
-/// Reads raw values back with bounds checks; any overrun makes ok() false.
-class Reader {
- public:
-  explicit Reader(const std::string& in) : in_(in) {}
-  template <class T>
-  T value() {
-    static_assert(std::is_trivially_copyable_v<T>);
-    T v{};
-    bytes(&v, sizeof v);
-    return v;
-  }
-  void bytes(void* p, std::size_t n) {
-    if (!ok_ || in_.size() - pos_ < n) {
-      ok_ = false;
-      return;
-    }
-    if (n == 0) return;  // an empty block may come with a null destination (an empty vector's data())
-    std::memcpy(p, in_.data() + pos_, n);
-    pos_ += n;
-  }
-  std::string text() {
-    const auto n = value<std::uint64_t>();
-    if (!ok_ || n > left()) {
-      ok_ = false;
-      return {};
-    }
-    std::string s(static_cast<std::size_t>(n), '\0');
-    bytes(s.data(), s.size());
-    return s;
-  }
-  [[nodiscard]] bool ok() const { return ok_; }
-  [[nodiscard]] bool at_end() const { return pos_ == in_.size(); }
-  [[nodiscard]] std::size_t left() const { return in_.size() - pos_; }
-
- private:
-  const std::string& in_;
-  std::size_t pos_ = 0;
-  bool ok_ = true;
-};
+using Writer = BinaryWriter;
+using Reader = BinaryReader;
 
 void write_header(Writer& w, std::uint64_t hash, const Mesh& solid, const PrefractureKey& key) {
   w.bytes(kMagic, sizeof kMagic);
@@ -190,68 +136,6 @@ std::uint64_t checksum(const char* data, std::size_t n) {
   Fnv1a h;
   h.bytes(data, n);
   return h.hash();
-}
-
-/// The distinct embedded images of the fragments' slots, in order of first use: stored once per file,
-/// since every fragment cut from one mesh shares them.
-std::vector<const TextureImage*> images_of(std::span<const Fragment> fragments) {
-  std::vector<const TextureImage*> images;
-  for (const Fragment& f : fragments)
-    for (const MaterialSlot& slot : f.mesh.attributes.slots)
-      if (slot.base_color_image && std::find(images.begin(), images.end(), slot.base_color_image.get()) == images.end())
-        images.push_back(slot.base_color_image.get());
-  return images;
-}
-
-/// Appends a mesh's attributes; slot images as indices into `images`.
-void write_attributes(Writer& w, const MeshAttributes& a, const std::vector<const TextureImage*>& images) {
-  w.value(static_cast<std::uint8_t>(a.layout.normals));
-  w.value(static_cast<std::int32_t>(a.layout.uv_sets));
-  w.value(static_cast<std::uint8_t>(a.layout.tangents));
-  w.value(static_cast<std::uint64_t>(a.corners.size()));
-  w.bytes(a.corners.data(), a.corners.size() * sizeof(double));
-  w.value(static_cast<std::uint64_t>(a.materials.size()));
-  w.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
-  w.value(static_cast<std::uint64_t>(a.slots.size()));
-  for (const MaterialSlot& slot : a.slots) {
-    w.text(slot.name);
-    w.bytes(slot.base_color.data(), sizeof slot.base_color);
-    w.text(slot.base_color_texture);
-    const auto image = std::find(images.begin(), images.end(), slot.base_color_image.get());
-    w.value(slot.base_color_image ? static_cast<std::int64_t>(image - images.begin()) : std::int64_t{-1});
-  }
-  w.value(a.cut.material);
-  w.value(a.cut.uv_scale);
-}
-
-/// Reads what write_attributes wrote; false on any overrun or an image index out of range.
-bool read_attributes(Reader& r, MeshAttributes& a, const std::vector<std::shared_ptr<const TextureImage>>& images) {
-  a.layout.normals = r.value<std::uint8_t>() != 0;
-  a.layout.uv_sets = r.value<std::int32_t>();
-  a.layout.tangents = r.value<std::uint8_t>() != 0;
-  if (a.layout.uv_sets < 0 || a.layout.uv_sets > kMaxUvSets) return false;
-  const auto corners = r.value<std::uint64_t>();
-  if (!r.ok() || corners > r.left() / sizeof(double)) return false;
-  a.corners.resize(static_cast<std::size_t>(corners));
-  r.bytes(a.corners.data(), a.corners.size() * sizeof(double));
-  const auto materials = r.value<std::uint64_t>();
-  if (!r.ok() || materials > r.left() / sizeof(std::int32_t)) return false;
-  a.materials.resize(static_cast<std::size_t>(materials));
-  r.bytes(a.materials.data(), a.materials.size() * sizeof(std::int32_t));
-  const auto slots = r.value<std::uint64_t>();
-  if (!r.ok() || slots > r.left()) return false;
-  a.slots.resize(static_cast<std::size_t>(slots));
-  for (MaterialSlot& slot : a.slots) {
-    slot.name = r.text();
-    r.bytes(slot.base_color.data(), sizeof slot.base_color);
-    slot.base_color_texture = r.text();
-    const auto image = r.value<std::int64_t>();
-    if (image < -1 || image >= static_cast<std::int64_t>(images.size())) return false;
-    if (image >= 0) slot.base_color_image = images[static_cast<std::size_t>(image)];
-  }
-  a.cut.material = r.value<std::int32_t>();
-  a.cut.uv_scale = r.value<double>();
-  return r.ok();
 }
 
 /// The bytes of the regular file at `path` when it holds at most kMaxCacheEntryBytes; nothing for a
@@ -280,12 +164,8 @@ std::optional<std::string> read_entry(const std::filesystem::path& path) {
   return out;
 }
 
-/// Whether every number of `f` is finite and every tag one of FaceTag's values.
+/// Whether the mass properties of `f` are finite (its mesh is checked by read_mesh).
 bool plausible(const Fragment& f) {
-  for (const Vec3& v : f.mesh.vertices)
-    if (!v.allFinite()) return false;
-  for (const FaceTag t : f.mesh.tags)
-    if (t != FaceTag::surface && t != FaceTag::cut && t != FaceTag::repair) return false;
   return std::isfinite(f.mass.volume) && f.mass.centroid.allFinite() && f.mass.inertia.allFinite();
 }
 
@@ -329,38 +209,18 @@ std::optional<std::vector<Fragment>> PrefractureCache::load(const Mesh& solid, c
   std::string skip(expected.data().size(), '\0');
   r.bytes(skip.data(), skip.size());
 
-  const auto image_count = r.value<std::uint64_t>();
-  if (!r.ok() || image_count > r.left()) return std::nullopt;
   std::vector<std::shared_ptr<const TextureImage>> images;
-  for (std::uint64_t i = 0; i < image_count && r.ok(); ++i) {
-    auto image = std::make_shared<TextureImage>();
-    image->mime_type = r.text();
-    const std::string bytes = r.text();
-    image->bytes.assign(bytes.begin(), bytes.end());
-    images.push_back(std::move(image));
-  }
+  if (!read_images(r, images)) return std::nullopt;
   const auto count = r.value<std::uint64_t>();
   if (!r.ok() || count > r.left()) return std::nullopt;
   std::vector<Fragment> fragments(static_cast<std::size_t>(count));
   for (Fragment& f : fragments) {
-    const auto nv = r.value<std::uint64_t>();
-    const auto nt = r.value<std::uint64_t>();
-    if (!r.ok() || nv > r.left() / (3 * sizeof(double)) || nt > r.left() / (3 * sizeof(std::int32_t))) return std::nullopt;
-    f.mesh.vertices.resize(static_cast<std::size_t>(nv));
-    f.mesh.triangles.resize(static_cast<std::size_t>(nt));
-    f.mesh.tags.resize(static_cast<std::size_t>(nt));
-    for (Vec3& v : f.mesh.vertices) r.bytes(v.data(), 3 * sizeof(double));
-    for (Triangle& t : f.mesh.triangles) r.bytes(t.data(), 3 * sizeof(std::int32_t));
-    r.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
+    if (!read_mesh(r, f.mesh, images)) return std::nullopt;
     r.bytes(&f.mass.volume, sizeof(double));
     r.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     r.bytes(f.mass.inertia.data(), 9 * sizeof(double));
-    if (!read_attributes(r, f.mesh.attributes, images)) return std::nullopt;
     if (!r.ok() || !plausible(f)) return std::nullopt;
     if (!f.mesh.attributes.empty() && !check_attributes(f.mesh, "cache")) return std::nullopt;
-    for (const Triangle& t : f.mesh.triangles)
-      for (const std::int32_t i : t)
-        if (i < 0 || static_cast<std::uint64_t>(i) >= nv) return std::nullopt;
   }
   if (!r.ok() || !r.at_end()) return std::nullopt;
   return fragments;
@@ -373,23 +233,16 @@ bool PrefractureCache::store(const Mesh& solid, const PrefractureKey& key, std::
   if (ec) return false;
   Writer w;
   write_header(w, key_hash(solid, key), solid, key);
-  const std::vector<const TextureImage*> images = images_of(fragments);
-  w.value(static_cast<std::uint64_t>(images.size()));
-  for (const TextureImage* image : images) {
-    w.text(image->mime_type);
-    w.text(std::string(image->bytes.begin(), image->bytes.end()));
-  }
+  std::vector<const Mesh*> meshes;
+  for (const Fragment& f : fragments) meshes.push_back(&f.mesh);
+  const std::vector<const TextureImage*> images = embedded_images(meshes);
+  write_images(w, images);
   w.value(static_cast<std::uint64_t>(fragments.size()));
   for (const Fragment& f : fragments) {
-    w.value(static_cast<std::uint64_t>(f.mesh.vertices.size()));
-    w.value(static_cast<std::uint64_t>(f.mesh.triangles.size()));
-    for (const Vec3& v : f.mesh.vertices) w.bytes(v.data(), 3 * sizeof(double));
-    for (const Triangle& t : f.mesh.triangles) w.bytes(t.data(), 3 * sizeof(std::int32_t));
-    w.bytes(f.mesh.tags.data(), f.mesh.tags.size() * sizeof(FaceTag));
+    write_mesh(w, f.mesh, images);
     w.bytes(&f.mass.volume, sizeof(double));
     w.bytes(f.mass.centroid.data(), 3 * sizeof(double));
     w.bytes(f.mass.inertia.data(), 9 * sizeof(double));
-    write_attributes(w, f.mesh.attributes, images);
   }
   const std::uint64_t sum = checksum(w.data().data(), w.data().size());
   w.value(sum);
