@@ -14,7 +14,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const shatter::fuzz::InputFile file(data, size);
   shatter::Result<shatter::Mesh> mesh = shatter::read_off(file.path());
   if (!mesh) return 0;
-  shatter::Result<shatter::Solid> solid = shatter::make_solid(std::move(*mesh), "fuzz.off");
+  shatter::Result<shatter::Solid> solid = shatter::make_solid(std::move(*mesh), "fuzz.off", shatter::SolidRepair::repair_in_process);
   if (!solid) {
     const std::string& m = solid.error().message;
     if (m.empty() || m.find('\n') != std::string::npos) std::abort();

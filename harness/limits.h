@@ -124,4 +124,13 @@ inline constexpr std::uint64_t kMaxImportMemoryBytes = 8ULL << 30;
 /// Wall time of one asset import through assimp, seconds: a million-triangle FBX or glTF takes a few.
 inline constexpr double kMaxImportSeconds = 120.0;
 
+/// Memory of the child process that repairs a mesh into a solid (harness/cases/isolated_repair.h):
+/// CGAL's hole filling and self-intersection steps grow with the size of a hole or of an overlap, not
+/// with the mesh, so a flat polygon of 40,000 corners would exhaust the machine.
+inline constexpr std::uint64_t kMaxRepairMemoryBytes = 8ULL << 30;
+
+/// Wall time of one mesh repair, seconds: ten times the slowest repair of the CGAL data set (12.5 s,
+/// docs/repair.md).
+inline constexpr double kMaxRepairSeconds = 120.0;
+
 }  // namespace shatter

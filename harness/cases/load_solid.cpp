@@ -2,6 +2,7 @@
 
 #include "algorithms/assets/read_asset.h"
 #include "harness/cases/isolated_import.h"
+#include "harness/cases/isolated_repair.h"
 #include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/representable_range.h"
 
@@ -26,7 +27,8 @@ Result<Solid> make_solid(Mesh mesh, const std::string& what, SolidRepair repair,
   auto as_given = accepted(mesh, what);
   if (!as_given) {
     if (repair == SolidRepair::refuse) return as_given.error();
-    Result<RepairedSolid> repaired = repair_solid(mesh, what);
+    Result<RepairedSolid> repaired =
+        repair == SolidRepair::repair_in_process ? repair_solid(mesh, what) : repair_solid_isolated(mesh, what);
     if (!repaired) return repaired.error();
     solid.repair = repaired->report;
     transfer_attributes(mesh, repaired->mesh);

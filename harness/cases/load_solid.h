@@ -15,8 +15,9 @@ namespace shatter {
 
 /// What to do with a mesh that is not a solid.
 enum class SolidRepair {
-  repair,  ///< repair it (repair_solid); refuse it only when no solid exists
-  refuse,  ///< refuse it with the acceptance rule's reason (`--no-repair`)
+  repair,             ///< repair it in a child under the repair budget (isolated_repair.h); refuse it only when no solid exists
+  refuse,             ///< refuse it with the acceptance rule's reason (`--no-repair`)
+  repair_in_process,  ///< repair it in this process, without a budget: for the repair fuzzer, which must see a crash
 };
 
 /// How a solid's cut faces are dressed when it carries attributes (attribute_transfer.h).
