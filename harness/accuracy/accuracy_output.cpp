@@ -71,8 +71,9 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
         continue;
       }
       std::string first = cell(p.figures, "first_bond");
-      if (p.figures.value("first_bond_ties", 1) > 1)
-        first += fmt::format(" (tie of {})", p.figures["first_bond_ties"].get<int>());
+      if (const auto ties = p.figures.find("first_bond_ties");
+          ties != p.figures.end() && ties->is_number() && ties->get<double>() > 1)
+        first += fmt::format(" (tie of {:g})", ties->get<double>());
       out += fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n", markdown_cell(p.case_name), markdown_cell(p.algorithm),
                          markdown_cell(p.knob), cell(p.figures, "bonds"), time_text(p.time_ms), error_text(p),
                          cell(p.figures, "analytic_error"), cell(p.figures, "solver_error"), first,
@@ -90,7 +91,9 @@ std::string accuracy_to_markdown(const std::vector<AccuracyPoint>& points) {
     out += "|---|---|---|---:|---:|---:|---:|---:|---|\n";
     for (const AccuracyPoint& p : points) {
       if (p.family != "colliders") continue;
-      const std::string fracturer = markdown_cell(p.knobs.value("fracturer", std::string("-")));
+      const auto named = p.knobs.find("fracturer");
+      const std::string fracturer =
+          markdown_cell(named != p.knobs.end() && named->is_string() ? named->get<std::string>() : std::string("-"));
       if (p.figures.contains("failed")) {
         out += fmt::format("| {} | {} | {} | - | failed | - | - | - | {} |\n", markdown_cell(p.case_name), fracturer, markdown_cell(p.knob),
                            markdown_cell(p.figures["failed"].get<std::string>()));

@@ -17,11 +17,11 @@ struct AccuracyPoint {
   std::string case_name;             ///< the case the point was measured on
   std::string algorithm;             ///< registered fracturer or stress model name
   std::string knob;                  ///< the knob setting as text, e.g. "fragments=25 resolution=8"
-  nlohmann::ordered_json knobs;      ///< the same as an object, e.g. {"fragments": 25, "resolution": 8}
+  nlohmann::ordered_json knobs = nlohmann::ordered_json::object();    ///< the same as an object, e.g. {"fragments": 25, "resolution": 8}
   std::vector<double> samples_ms;    ///< wall time of each repetition, ms
   double time_ms = 0.0;              ///< median of samples_ms
   std::optional<double> error;       ///< the headline error (Pareto axis); empty when the model has none
-  nlohmann::ordered_json figures;    ///< every error figure, by name
+  nlohmann::ordered_json figures = nlohmann::ordered_json::object();  ///< every error figure, by name
   bool pareto = false;               ///< on the Pareto front of its family and case
 };
 

@@ -51,7 +51,7 @@ Result<RepairedSolid> repair_solid_isolated(const Mesh& mesh, const std::string&
         return w.data();
       },
       time_s);
-  const std::string budget_text = fmt::format("the repair's budget is {:g} s and {} GiB", time_s, memory >> 30);
+  const std::string budget_text = fmt::format("the repair's budget is {:g} s and {:g} MiB", time_s, static_cast<double>(memory >> 20));
   switch (run.end) {
     case IsolatedRun::End::timed_out:
       return Error{fmt::format("{}: the repair ran past its time budget ({}); the mesh is refused", what, budget_text)};

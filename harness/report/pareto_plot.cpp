@@ -63,7 +63,6 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
                               gnuplot_data_field(p.algorithm + " " + short_knob(p.knob)), p.time_ms * 1.06, ly);
     placed.emplace_back(p.time_ms, y(p));
   }
-  if (front.empty()) front_data += "NaN NaN \"\" NaN NaN\n";
 
   // One data block per algorithm (index a), then the front sorted by time (last index).
   std::string data;
@@ -106,16 +105,20 @@ Result<std::string> plot_pareto(const std::vector<AccuracyPoint>& points, const 
   script += "set linetype 1 lc rgb \"#4e79a7\" pt 7\nset linetype 2 lc rgb \"#e15759\" pt 5\n"
             "set linetype 3 lc rgb \"#59a14f\" pt 9\nset linetype 4 lc rgb \"#b07aa1\" pt 11\n"
             "set linetype 5 lc rgb \"#f28e2b\" pt 13\n";
+  std::vector<std::string> plots;
+  for (std::size_t a = 0; a < algorithms.size(); ++a)
+    plots.push_back(fmt::format("\"{}.dat\" index {} using 1:2 with points lt {} ps 1.6 title {}", stem, a, a + 1, legend[a]));
+  for (std::size_t a = 0; a < algorithms.size(); ++a)
+    plots.push_back(fmt::format(
+        "\"{}.dat\" index {} using 1:2:3 with labels left offset 0.7,-0.5 font \"Sans,7\" tc rgb \"#777777\" notitle", stem, a));
+  // A file whose points mark no front draws none (gnuplot 5.4 crashes labelling a block of NaN).
+  if (!front.empty()) {
+    const std::size_t f = algorithms.size();
+    plots.push_back(fmt::format("\"{}.dat\" index {} using 1:2 with steps lc rgb \"black\" dt 2 lw 1.5 title \"Pareto front\"", stem, f));
+    plots.push_back(fmt::format("\"{}.dat\" index {} using 4:5:3 with labels left font \"Sans Bold,8\" notitle", stem, f));
+  }
   script += "plot \\\n";
-  for (std::size_t a = 0; a < algorithms.size(); ++a)
-    script += fmt::format("  \"{}.dat\" index {} using 1:2 with points lt {} ps 1.6 title {}, \\\n", stem, a, a + 1,
-                          legend[a]);
-  for (std::size_t a = 0; a < algorithms.size(); ++a)
-    script += fmt::format("  \"{}.dat\" index {} using 1:2:3 with labels left offset 0.7,-0.5 font \"Sans,7\" tc rgb \"#777777\" notitle, \\\n",
-                          stem, a);
-  const std::size_t f = algorithms.size();
-  script += fmt::format("  \"{}.dat\" index {} using 1:2 with steps lc rgb \"black\" dt 2 lw 1.5 title \"Pareto front\", \\\n", stem, f);
-  script += fmt::format("  \"{}.dat\" index {} using 4:5:3 with labels left font \"Sans Bold,8\" notitle\n", stem, f);
+  for (std::size_t i = 0; i < plots.size(); ++i) script += "  " + plots[i] + (i + 1 < plots.size() ? ", \\\n" : "\n");
   if (Status s = write_file_atomically(folder / (stem + ".txt"), strings.data()); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".dat"), data); !s) return s.error();
   if (Status s = write_file_atomically(folder / (stem + ".gp"), script); !s) return s.error();

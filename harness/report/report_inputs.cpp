@@ -129,9 +129,14 @@ ReportAccuracy read_accuracy(const Json& j, const std::string& file) {
     p.time_ms = number_or_null(e, "time_ms", path).value_or(std::numeric_limits<double>::quiet_NaN());
     p.error = number_or_null(e, "error", path);
     p.pareto = boolean(e, "pareto", path);
-    if (e.contains("knobs")) p.knobs = e["knobs"];
+    if (e.contains("knobs")) {
+      if (!e["knobs"].is_object()) throw KeyError{path + ".knobs: expected an object"};
+      p.knobs = e["knobs"];
+    }
     if (e.contains("figures")) {
       if (!e["figures"].is_object()) throw KeyError{path + ".figures: expected an object"};
+      if (e["figures"].contains("failed") && !e["figures"]["failed"].is_string())
+        throw KeyError{path + ".figures.failed: expected a string"};
       p.figures = e["figures"];
     }
     a.points.push_back(std::move(p));
