@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string_view>
 #include <vector>
 
@@ -55,6 +56,15 @@ class Fracturer {
     (void)solid;
     (void)params;
     return std::optional<CutPlan>();
+  }
+  /// Cuts `solid` by each of `planes` in turn, every piece a plane crosses split in two, for callers
+  /// that choose the cuts (the stability battery's exact cuts); none (the default) when the fracturer
+  /// only cuts where it chooses. Errors as fracture() does.
+  [[nodiscard]] virtual Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
+                                                                               std::span<const Plane> planes) const {
+    (void)solid;
+    (void)planes;
+    return std::optional<std::vector<Fragment>>();
   }
   /// True for an exact reference: the fracturer others are replayed with, not itself measured.
   [[nodiscard]] virtual bool exact_reference() const { return false; }

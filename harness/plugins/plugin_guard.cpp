@@ -76,6 +76,16 @@ class GuardedFracturer final : public Fracturer {
     return std::move(*out);
   }
 
+  [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
+                                                                       std::span<const Plane> planes) const override {
+    std::optional<Result<std::optional<std::vector<Fragment>>>> out;
+    if (Status s = contained(who_, [&] { out.emplace(inner_->cut_by_planes(solid, planes)); }); !s) return s.error();
+    if (!*out) return outside_error(out->error());
+    if (**out)
+      if (Status s = check_fracture_output(solid, ***out, name_); !s) return fault(s);
+    return std::move(*out);
+  }
+
   [[nodiscard]] bool exact_reference() const override {
     bool exact = false;
     // A plugin that cannot say is measured like any other fracturer.
@@ -196,7 +206,7 @@ std::string one_printable_line(const std::string& text, std::size_t limit) {
   return out;
 }
 
-void guard_plugin_registrations(Registries& staged) {
+void guard_registrations(Registries& staged) {
   staged.fracturers.wrap_factories([](const std::string& name, FracturerRegistry::Factory f) {
     return guarded_factory<Fracturer, GuardedFracturer>(name, std::move(f));
   });

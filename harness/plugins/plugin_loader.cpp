@@ -77,7 +77,7 @@ Status register_plugin(void* handle, const std::string& path, Registries& regist
   if (Status s = check_entries(staged.fracturers, registries.fracturers, origins, path); !s) return s;
   if (Status s = check_entries(staged.stress_models, registries.stress_models, origins, path); !s) return s;
   // From here on every object the plugin makes is reached through the host's guard.
-  guard_plugin_registrations(staged);
+  guard_registrations(staged);
   loaded_files().push_back(path);
   for (const std::string& name : staged.fracturers.names()) origins[name] = path;
   for (const std::string& name : staged.stress_models.names()) origins[name] = path;

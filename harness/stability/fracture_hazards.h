@@ -19,11 +19,14 @@ struct FractureHazard {
   std::string name;               ///< e.g. "cut-through-vertices"
   std::string description;        ///< one line
   Mesh mesh;                      ///< the raw input; validate_solid runs first, as for a file
-  /// Exact planes, cut in order. Fracturers with a plane interface (plane-slice, cgal-clip) cut by
-  /// them; the others fracture every piece of the exact cut (made by plane-slice) on their own.
+  /// Exact planes, cut in order. A fracturer that cuts by given planes (Fracturer::cut_by_planes)
+  /// cuts by them; the others fracture every piece of the exact cut (made by plane-slice) on their own.
   std::vector<Plane> planes;
   FractureParams params;          ///< fragments and seed when there are no planes
   bool refracture = false;        ///< fracture every fragment again with `params` (fragments of fragments)
+  /// A fracturer may refuse this case (a non-manifold solid, a fragment count past a documented
+  /// limit); on every other case a refusal of the validated solid is REFUSED_VALID_INPUT, a failure.
+  bool may_refuse = false;
 };
 
 /// The fracture hazards. `quick` shrinks the deep-recursion cases (1,000 fragments -> 100).

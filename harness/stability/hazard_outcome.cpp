@@ -11,6 +11,7 @@ std::string_view outcome_tag(HazardOutcome outcome) {
     case HazardOutcome::valid: return "VALID";
     case HazardOutcome::invalid_output: return "INVALID_OUTPUT";
     case HazardOutcome::rejected_input: return "REJECTED_INPUT";
+    case HazardOutcome::refused_valid_input: return "REFUSED_VALID_INPUT";
     case HazardOutcome::crash: return "CRASH";
     case HazardOutcome::timeout: return "TIMEOUT";
   }
@@ -39,7 +40,7 @@ bool from_json(const nlohmann::json& j, HazardResult& r) {
     const std::string tag = j.at("outcome").get<std::string>();
     bool known = false;
     for (HazardOutcome o : {HazardOutcome::valid, HazardOutcome::invalid_output, HazardOutcome::rejected_input,
-                            HazardOutcome::crash, HazardOutcome::timeout})
+                            HazardOutcome::refused_valid_input, HazardOutcome::crash, HazardOutcome::timeout})
       if (outcome_tag(o) == tag) {
         r.outcome = o;
         known = true;

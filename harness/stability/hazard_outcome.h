@@ -16,6 +16,9 @@ enum class HazardOutcome {
   valid,           ///< every check passed
   invalid_output,  ///< the algorithm returned output that failed a check (named in `detail`)
   rejected_input,  ///< the algorithm or the input validation refused the input with an error message
+  /// the algorithm refused an input that every fracturer must take (a valid solid, an ordinary
+  /// request): a failure, like invalid output
+  refused_valid_input,
   crash,           ///< the isolated run died (signal, abort, sanitizer) or exited without a verdict
   timeout,         ///< the isolated run passed its time limit and was killed
 };
@@ -24,7 +27,7 @@ enum class HazardOutcome {
 /// host caught (an exception, a null, a result that failed the output checks; ErrorCause).
 HazardOutcome refusal_outcome(const Error& error);
 
-/// "VALID", "INVALID_OUTPUT", "REJECTED_INPUT", "CRASH" or "TIMEOUT".
+/// "VALID", "INVALID_OUTPUT", "REJECTED_INPUT", "REFUSED_VALID_INPUT", "CRASH" or "TIMEOUT".
 std::string_view outcome_tag(HazardOutcome outcome);
 
 /// One row of the stability report.

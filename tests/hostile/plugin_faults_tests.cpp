@@ -194,6 +194,24 @@ TEST_CASE("plugin faults: stability calls a faulty plugin INVALID_OUTPUT and fai
   }
 }
 
+TEST_CASE("plugin faults: stability fails a fracturer that refuses a valid solid", "[hostile][plugins][cli]") {
+  const std::string plugin = hostile_plugin();
+  const CliRun run = run_cli_argv({"--plugin", plugin, "stability", "--algo", "hostile-error", "--model",
+                                   "connection-count", "--quick"});
+  CHECK(run.exit_code == 1);
+  std::istringstream rows(run.out);
+  int refused = 0;
+  for (std::string row; std::getline(rows, row);) {
+    if (row.find("| hostile-error |") == std::string::npos) continue;
+    INFO(row);
+    // Only the cases a fracturer may refuse stay REJECTED_INPUT.
+    const bool may_refuse = row.rfind("| pinched-vertex |", 0) == 0 || row.rfind("| deep-recursion |", 0) == 0;
+    CHECK_THAT(row, Catch::Contains(may_refuse ? "| REJECTED_INPUT |" : "| REFUSED_VALID_INPUT |"));
+    refused += may_refuse ? 0 : 1;
+  }
+  CHECK(refused >= 10);
+}
+
 TEST_CASE("plugin loading: a file that is not a whole shared object of this machine is refused before it is mapped",
           "[hostile][plugins][cli]") {
   const fs::path dir = hostile_scratch("plugin_files");

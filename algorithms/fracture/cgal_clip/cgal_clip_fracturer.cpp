@@ -111,6 +111,13 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture(const Mesh& solid, con
   });
 }
 
+Result<std::optional<std::vector<Fragment>>> CgalClipFracturer::cut_by_planes(const Mesh& solid,
+                                                                            std::span<const Plane> planes) const {
+  Result<std::vector<Fragment>> pieces = fracture_by_planes(solid, planes);
+  if (!pieces) return pieces.error();
+  return std::optional<std::vector<Fragment>>(std::move(*pieces));
+}
+
 Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_planes(const Mesh& solid,
                                                                     std::span<const Plane> planes) const {
   if (Status s = check_fracture_solid(solid, "cgal-clip", nullptr); !s) return s.error();

@@ -34,6 +34,9 @@ class CgalClipFracturer final : public Fracturer {
   /// Replays `plan` exactly: fracture() for a recursive schedule, fracture_by_planes() for planes,
   /// fracture_by_cells() for cells.
   [[nodiscard]] Result<std::vector<Fragment>> replay(const Mesh& solid, const CutPlan& plan) const;
+  /// fracture_by_planes(solid, planes).
+  [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
+                                                                       std::span<const Plane> planes) const override;
   /// Cuts `solid` by each plane in turn, as PlaneSliceFracturer::fracture_by_planes.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid,
                                                                  std::span<const Plane> planes) const;

@@ -20,6 +20,9 @@ class PlaneSliceFracturer final : public Fracturer {
   /// Its own recursive schedule (fragments and seed of `params`).
   [[nodiscard]] Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
                                                         const FractureParams& params) const override;
+  /// fracture_by_planes(solid, planes).
+  [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
+                                                                       std::span<const Plane> planes) const override;
   /// Cuts `solid` by each plane in turn (every piece a plane crosses is split); an error once the
   /// pieces outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller). `verdicts`
   /// as FractureParams::verdicts.
