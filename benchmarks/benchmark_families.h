@@ -26,4 +26,8 @@ void register_physics_benchmarks(const Registries& registries);
 /// outlive the benchmark run.
 void register_stress_benchmarks(const Registries& registries);
 
+/// boundary/...: the output checks beside the work they check, and the import in a child beside the
+/// import in the process (boundary_benchmarks.cpp); `registries` must outlive the benchmark run.
+void register_boundary_benchmarks(const Registries& registries);
+
 }  // namespace shatter

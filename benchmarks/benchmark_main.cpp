@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   shatter::register_collider_benchmarks(registries);
   shatter::register_physics_benchmarks(registries);
   shatter::register_stress_benchmarks(registries);
+  shatter::register_boundary_benchmarks(registries);
   benchmark::Initialize(&argc, argv);
   if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
   benchmark::RunSpecifiedBenchmarks();

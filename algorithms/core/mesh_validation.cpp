@@ -116,8 +116,42 @@ bool is_closed_and_oriented(const Mesh& mesh) {
       if (index < 0 || index >= vertex_count) return false;
   for (const Triangle& t : mesh.triangles)
     if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0]) return false;
-  const EdgeClassification edges = classify_edges(mesh.triangles, mesh.vertices.size());
-  return std::all_of(edges.state.begin(), edges.state.end(), [](EdgeState s) { return s == EdgeState::ok; });
+  // Closed and consistently oriented: every directed edge a->b is used exactly once, and so is b->a.
+  // The half-edges are bucketed by their origin (a counting sort), and each a->b is counted in a's
+  // bucket and its twin in b's: a plain scan of the few targets of an ordinary vertex, a binary search
+  // in the sorted bucket of a vertex of many. Linear in the triangles, with no edge classification
+  // arrays (this runs on every fragment of every fracture, fracture_output_check.h).
+  constexpr std::int32_t kScanned = 32;  // buckets up to this size are scanned, larger ones sorted
+  const std::size_t n = mesh.vertices.size();
+  std::vector<std::int32_t> start(n + 1, 0);
+  for (const Triangle& t : mesh.triangles)
+    for (const std::int32_t a : t) ++start[static_cast<std::size_t>(a) + 1];
+  for (std::size_t v = 0; v < n; ++v) start[v + 1] += start[v];
+  std::vector<std::int32_t> target(3 * mesh.triangles.size());
+  std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
+  for (const Triangle& t : mesh.triangles)
+    for (int i = 0; i < 3; ++i) target[static_cast<std::size_t>(fill[static_cast<std::size_t>(t[i])]++)] = t[(i + 1) % 3];
+  for (std::size_t v = 0; v < n; ++v)
+    if (start[v + 1] - start[v] > kScanned) std::sort(target.begin() + start[v], target.begin() + start[v + 1]);
+  // How often `x` is a target in the bucket of `v`.
+  const auto uses = [&](std::size_t v, std::int32_t x) {
+    const std::int32_t* first = target.data() + start[v];
+    const std::int32_t* last = target.data() + start[v + 1];
+    if (last - first > kScanned) {
+      const auto range = std::equal_range(first, last, x);
+      return static_cast<std::int32_t>(range.second - range.first);
+    }
+    std::int32_t count = 0;
+    for (const std::int32_t* p = first; p != last; ++p) count += *p == x ? 1 : 0;
+    return count;
+  };
+  bool ok = true;
+  for (std::size_t a = 0; a < n && ok; ++a)
+    for (std::int32_t k = start[a]; k < start[a + 1]; ++k) {
+      const std::int32_t b = target[static_cast<std::size_t>(k)];
+      ok &= uses(a, b) == 1 && uses(static_cast<std::size_t>(b), static_cast<std::int32_t>(a)) == 1;
+    }
+  return ok;
 }
 
 bool all_finite(const Mesh& mesh) {

@@ -1,3 +1,4 @@
+#include "algorithms/core/edge_classification.h"
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
@@ -6,6 +7,7 @@
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -189,4 +191,30 @@ TEST_CASE("validation: two tetrahedra touching at one vertex get a vertex each",
   for (const shatter::Triangle& t : m.triangles)
     for (int k = 0; k < 3; ++k) uses_of_apex += t[k] == 0;
   CHECK(uses_of_apex == 3);
+}
+
+TEST_CASE("is_closed_and_oriented agrees with the edge classification, at vertices of few and of many edges",
+          "[mesh][validation]") {
+  // The cylinder's cap centres have 200 edges each (the binary-search path), its rim vertices 5 or 6.
+  const Mesh closed = make_cylinder(1.0, 2.0, 200);
+  const auto classified_ok = [](const Mesh& m) {
+    const EdgeClassification edges = classify_edges(m.triangles, m.vertices.size());
+    return std::all_of(edges.state.begin(), edges.state.end(), [](EdgeState s) { return s == EdgeState::ok; });
+  };
+  REQUIRE(classified_ok(closed));
+  CHECK(is_closed_and_oriented(closed));
+  // Every single-face defect, once per face: flipped, removed, doubled. Each is found by both.
+  for (std::size_t f = 0; f < closed.triangles.size(); f += 7) {
+    Mesh flipped = closed;
+    std::swap(flipped.triangles[f][1], flipped.triangles[f][2]);
+    Mesh removed = closed;
+    removed.triangles.erase(removed.triangles.begin() + static_cast<std::ptrdiff_t>(f));
+    Mesh doubled = closed;
+    doubled.triangles.push_back(closed.triangles[f]);
+    for (const Mesh* m : {&flipped, &removed, &doubled}) {
+      INFO("face " << f);
+      CHECK_FALSE(classified_ok(*m));
+      CHECK_FALSE(is_closed_and_oriented(*m));
+    }
+  }
 }
