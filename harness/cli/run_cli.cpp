@@ -6,6 +6,7 @@
 #include "harness/cli/command.h"
 #include "harness/cli/numeric_flags.h"
 #include "harness/plugins/plugin_loader.h"
+#include "harness/plugins/setting_overrides.h"
 #include "harness/results/run_context.h"
 
 #include <cerrno>
@@ -21,11 +22,13 @@
 namespace shatter {
 namespace {
 
-/// argv without its `--plugin PATH` and `--plugin=PATH` options (before a "--"), and their paths.
+/// argv without its `--plugin PATH` and `--set NAME.KEY=VALUE` options (also as `--plugin=PATH`,
+/// `--set=...`; before a "--"), and their values.
 struct PluginArguments {
   std::vector<char*> argv;
   std::vector<std::string> paths;
-  std::string error;  ///< a --plugin without its path
+  std::vector<std::string> sets;
+  std::string error;  ///< a --plugin or --set without its value
 };
 
 PluginArguments take_plugin_arguments(int argc, char** argv) {
@@ -44,6 +47,22 @@ PluginArguments take_plugin_arguments(int argc, char** argv) {
         return out;
       }
       out.paths.emplace_back(argv[++i]);
+      continue;
+    }
+    if (arg == "--set") {
+      if (i + 1 >= argc || std::string_view(argv[i + 1]).empty()) {
+        out.error = "--set needs NAME.KEY=VALUE";
+        return out;
+      }
+      out.sets.emplace_back(argv[++i]);
+      continue;
+    }
+    if (arg.starts_with("--set=")) {
+      if (arg.size() == 6) {
+        out.error = "--set needs NAME.KEY=VALUE";
+        return out;
+      }
+      out.sets.emplace_back(arg.substr(6));
       continue;
     }
     if (arg.starts_with("--plugin=")) {
@@ -111,6 +130,9 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
   argv = arguments.argv.data();
   Result<LoadedRegistries> loaded = with_plugins(builtin, arguments.paths);
   if (!loaded) return fail_input(loaded.error().message);
+  Result<SettingOverrides> overrides = parse_setting_overrides(arguments.sets);
+  if (!overrides) return fail_input(overrides.error().message);
+  if (Status s = apply_setting_overrides(loaded->registries, *overrides); !s) return fail_algorithm("", s.error());
   const Registries& registries = loaded->registries;
   CLI::App app{"shatterbench: benchmark and regression harness for real-time destruction algorithms",
                "shatterbench"};
@@ -120,6 +142,10 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
   app.add_option("--plugin", plugin_help,
                  "Load a plugin library with more fracturers and stress models (repeatable; also the "
                  "':'-separated SHATTERBENCH_PLUGIN_PATH); docs/plugins.md");
+  std::vector<std::string> set_help;
+  app.add_option("--set", set_help,
+                 "NAME.KEY=VALUE: a setting of fracturer or stress model NAME wherever the command creates it, "
+                 "over the case file's (repeatable; `list` shows each one's keys); docs/cli.md");
   int exit_code = exit_ok;
   add_list_command(app, exit_code, registries, loaded->origins);
   add_fracture_command(app, exit_code, registries);
