@@ -115,6 +115,10 @@ inline constexpr PhysicalRange kScaleRange{1e-6, 1e6, false, ""};
 /// that would be larger is not stored.
 inline constexpr std::uint64_t kMaxCacheEntryBytes = 1ULL << 30;
 
+/// Size of one texture image that `fracture --out` copies beside the fragments (harness/results/
+/// fragment_writer.h): a 16k x 16k RGBA PNG is at most about 1 GiB, a game's textures are a few MB.
+inline constexpr std::uint64_t kMaxTextureBytes = 256ULL << 20;
+
 /// Memory of the child process that imports an asset through assimp (harness/cases/isolated_import.h):
 /// its address space is limited to this (RLIMIT_AS), so a decompression bomb or a file that claims
 /// billions of elements ends that child, not the machine. assimp holds about 3 to 4 times the mesh

@@ -59,7 +59,8 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
   const FractureMetrics m = fracture_metrics(solid->mesh, solid->mass, *fragments, o.fragments);
   const AttributeMetrics a = attribute_metrics(solid->mesh, *fragments);
   if (!o.out.empty()) {
-    if (Status s = write_fragments(o.out, *fragments); !s) return fail_input(s.error().message);
+    if (Status s = write_fragments(o.out, *fragments, std::filesystem::path(o.mesh).parent_path()); !s)
+      return fail_input(s.error().message);
   }
   nlohmann::ordered_json input = {{"file", o.mesh}};
   input.update(input_solid_json(*solid));

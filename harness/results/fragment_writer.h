@@ -15,6 +15,14 @@ namespace shatter {
 /// attributes and materials; written for fragments with or without attributes); whole or
 /// not at all (harness/output/output_folder.h): DIR must be absent, empty or an earlier output of
 /// shatterbench, which is replaced as a whole. On error nothing in DIR changes.
-Status write_fragments(const std::filesystem::path& dir, std::span<const Fragment> fragments);
+///
+/// Textures travel with the fragments: an image a material names as a file (relative to
+/// `asset_folder`, the folder of the mesh file that was read) is copied to `DIR/textures/` and both
+/// `fragments.mtl` and `fragments.glb` name the copy; an image embedded in the input is written to
+/// `DIR/textures/` for the MTL and stays embedded in the glTF binary. A named image that is missing,
+/// outside `asset_folder` (asset_reference.h) or larger than kMaxTextureBytes is an error naming the
+/// material and the file, and nothing is written.
+Status write_fragments(const std::filesystem::path& dir, std::span<const Fragment> fragments,
+                       const std::filesystem::path& asset_folder = {});
 
 }  // namespace shatter
