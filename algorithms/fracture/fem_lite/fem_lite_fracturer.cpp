@@ -80,7 +80,10 @@ Result<std::vector<Fragment>> FemLiteFracturer::fracture(const Mesh& solid, cons
   // cut (one fragment) and for its own error past the fragment limit.
   if (!pieces.empty() && pieces.size() <= static_cast<std::size_t>(kMaxFragments))
     return to_fragments(std::move(pieces), tracking);
-  return PlaneSliceFracturer().fracture_by_planes(solid, analysis->planes, kMaxFragments, params.verdicts);
+  // The crack planes are the search's choice: one the kernel cannot cap leaves its piece whole, as
+  // the search's own count of pieces assumed (piece_counter.h).
+  return PlaneSliceFracturer().fracture_by_planes(solid, analysis->planes, kMaxFragments, params.verdicts,
+                                                  PlaneSliceFracturer::FailedCut::keep_whole);
 }
 
 Result<std::optional<CutPlan>> FemLiteFracturer::cut_plan(const Mesh& solid, const FractureParams& params) const {

@@ -42,7 +42,8 @@ Result<std::optional<std::vector<Fragment>>> PlaneSliceFracturer::cut_by_planes(
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
                                                                       int max_fragments,
-                                                                      SelfIntersectionVerdicts* verdicts) const {
+                                                                      SelfIntersectionVerdicts* verdicts,
+                                                                      FailedCut failed) const {
   if (Status s = check_fracture_solid(solid, "plane-slice", verdicts, AttributeValues::at_use); !s)
     return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
@@ -52,6 +53,12 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh
   auto pieces = slice_by_planes(kernel, start_pieces(solid, tracking), planes,
                                 static_cast<std::size_t>(std::max(max_fragments, 1)));
   if (!pieces) return Error{"plane-slice: " + pieces.error().message};
+  // A plane that misses a piece leaves it whole by design; a cut that crossed a piece but could not
+  // be made would leave fewer fragments than the planes make, so it fails the whole call.
+  if (kernel.failed_cuts() > 0 && failed == FailedCut::refuse)
+    return Error{"plane-slice: " + std::to_string(kernel.failed_cuts()) +
+                 (kernel.failed_cuts() == 1 ? " cut" : " cuts") + " through a piece could not be made (" +
+                 kernel.first_failure() + "); no fragments are returned"};
   return to_fragments(std::move(*pieces), tracking);
 }
 

@@ -23,12 +23,20 @@ class PlaneSliceFracturer final : public Fracturer {
   /// fracture_by_planes(solid, planes).
   [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
                                                                        std::span<const Plane> planes) const override;
-  /// Cuts `solid` by each plane in turn (every piece a plane crosses is split); an error once the
-  /// pieces outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller). `verdicts`
-  /// as FractureParams::verdicts.
+  /// What fracture_by_planes does when a plane crosses a piece but the cut cannot be made (its
+  /// outline cannot be capped: a plane within rounding distance of vertices, docs/plugins.md).
+  enum class FailedCut {
+    keep_whole,  ///< that piece stays whole for that plane (the default; the pieces may be fewer than the planes make)
+    refuse,      ///< the call is an error naming the count and the reason: never fewer fragments than the planes make
+  };
+  /// Cuts `solid` by each plane in turn (every piece a plane crosses is split; a plane that misses a
+  /// piece leaves it whole); a cut that cannot be made as `failed` says; an error once the pieces
+  /// outnumber `max_fragments` (the documented kMaxFragments; tests pass smaller). `verdicts` as
+  /// FractureParams::verdicts.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
                                                                  int max_fragments = kMaxFragments,
-                                                                 SelfIntersectionVerdicts* verdicts = nullptr) const;
+                                                                 SelfIntersectionVerdicts* verdicts = nullptr,
+                                                                 FailedCut failed = FailedCut::keep_whole) const;
 };
 
 /// Registers "plane-slice" (no settings).

@@ -11,7 +11,7 @@ void SliceKernel::split(const Piece& piece, const Plane& plane, std::vector<Piec
   Mesh lower;
   Mesh upper;
   const SliceOutcome outcome = slicer_.slice(piece.mesh, plane, lower, upper, provenance_);
-  if (outcome == SliceOutcome::failed) ++failed_cuts_;
+  if (outcome == SliceOutcome::failed && failed_cuts_++ == 0) first_failure_ = slicer_.error();
   if (outcome != SliceOutcome::cut) return;
   append_parts(std::move(lower), below);
   append_parts(std::move(upper), above);

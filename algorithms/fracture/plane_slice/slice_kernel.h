@@ -10,6 +10,7 @@
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/plane_slice/mesh_slicer.h"
 
+#include <string>
 #include <vector>
 
 namespace shatter {
@@ -38,11 +39,14 @@ class SliceKernel {
 
   /// Cuts the slicer could not cap; those pieces were kept whole.
   [[nodiscard]] int failed_cuts() const { return failed_cuts_; }
+  /// Why the first of them failed ("" when none did).
+  [[nodiscard]] const std::string& first_failure() const { return first_failure_; }
 
  private:
   CornerProvenance* provenance_;
   mutable MeshSlicer slicer_;
   mutable int failed_cuts_ = 0;
+  mutable std::string first_failure_;
 };
 
 /// The solid's volumes as pieces: tracked by `provenance` when given.
