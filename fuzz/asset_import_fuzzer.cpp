@@ -2,8 +2,7 @@
 /// child process under its memory and time limits, harness/cases/isolated_import.h). The first byte
 /// picks the format (its extension), the rest is the file. Whatever assimp does in the child (a crash,
 /// an abort, a limit reached), the parent must get a mesh that satisfies the Mesh invariants or a
-/// one-line error, and never crash itself. (The file is written to a folder of the fuzzer's own, not a memfd: assimp picks
-/// its importer by the extension.)
+/// one-line error, and never crash itself.
 
 #include "fuzz/mesh_invariants.h"
 #include "harness/cases/isolated_import.h"
