@@ -117,6 +117,32 @@ Result<LoadedRegistries> with_plugins(const Registries& registries, const std::v
   return all;
 }
 
+/// The `--set` values of SHATTERBENCH_SET (one per line) with those of `flags` over them. The flags
+/// are left in SHATTERBENCH_SET (as the plugins in SHATTERBENCH_PLUGIN_PATH), so a child this process
+/// runs (the callgrind re-run of `grid --metric instructions`) sets the same keys.
+Result<SettingOverrides> setting_overrides(const std::vector<std::string>& flags) {
+  std::vector<std::string> inherited;
+  const char* variable = std::getenv("SHATTERBENCH_SET");
+  for (std::string_view rest = variable != nullptr ? variable : ""; !rest.empty();) {
+    const std::size_t end = rest.find('\n');
+    if (end != 0) inherited.emplace_back(rest.substr(0, end));
+    rest = end == std::string_view::npos ? std::string_view() : rest.substr(end + 1);
+  }
+  Result<SettingOverrides> merged = parse_setting_overrides(inherited);
+  if (!merged) return Error{"SHATTERBENCH_SET: " + merged.error().message};
+  Result<SettingOverrides> given = parse_setting_overrides(flags);
+  if (!given) return given.error();
+  for (const auto& [name, settings] : *given)
+    for (const auto& [key, value] : settings) (*merged)[name][key] = value;
+  if (!flags.empty()) {
+    std::string joined;
+    for (const auto& [name, settings] : *merged)
+      for (const auto& [key, value] : settings) joined += name + "." + key + "=" + setting_value_text(value) + "\n";
+    ::setenv("SHATTERBENCH_SET", joined.c_str(), 1);
+  }
+  return merged;
+}
+
 }  // namespace
 
 int run_cli(int argc, char** argv, const Registries& builtin) {
@@ -130,7 +156,7 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
   argv = arguments.argv.data();
   Result<LoadedRegistries> loaded = with_plugins(builtin, arguments.paths);
   if (!loaded) return fail_input(loaded.error().message);
-  Result<SettingOverrides> overrides = parse_setting_overrides(arguments.sets);
+  Result<SettingOverrides> overrides = setting_overrides(arguments.sets);
   if (!overrides) return fail_input(overrides.error().message);
   if (Status s = apply_setting_overrides(loaded->registries, *overrides); !s) return fail_algorithm("", s.error());
   const Registries& registries = loaded->registries;

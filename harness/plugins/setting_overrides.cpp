@@ -1,6 +1,7 @@
 #include "harness/plugins/setting_overrides.h"
 
 #include <cerrno>
+#include <cstdio>
 #include <cmath>
 #include <cstdlib>
 #include <utility>
@@ -53,11 +54,22 @@ Result<SettingOverrides> parse_setting_overrides(const std::vector<std::string>&
     const std::string name = target.substr(0, dot);
     const std::string key = target.substr(dot + 1);
     if (!snake_case(key)) return Error{at + "the key '" + key + "' is not snake_case (a-z, 0-9, '_')"};
+    if (text.find_first_of("\n\r") != std::string::npos) return Error{"--set: a value may not hold a line break"};
     PluginSettings& settings = out[name];
     if (settings.contains(key)) return Error{at + name + "." + key + " is set twice"};
     settings[key] = value_of(text.substr(equals + 1));
   }
   return out;
+}
+
+std::string setting_value_text(const SettingValue& value) {
+  if (const bool* flag = std::get_if<bool>(&value)) return *flag ? "true" : "false";
+  if (const double* number = std::get_if<double>(&value)) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.17g", *number);
+    return buffer;
+  }
+  return std::get<std::string>(value);
 }
 
 Status apply_setting_overrides(Registries& registries, const SettingOverrides& overrides) {

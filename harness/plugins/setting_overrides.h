@@ -1,5 +1,5 @@
 #pragma once
-/// Plugin settings from the command line: `--set NAME.KEY=VALUE` (docs/cli.md, "Plugin settings").
+/// Plugin settings from the command line: `--set NAME.KEY=VALUE` (docs/cli.md, "--set").
 ///
 /// Design note: a case file gives settings only to the algorithms it names, and a command-line option
 /// that picks another algorithm gives that one its defaults. `--set` reaches every algorithm by name,
@@ -22,9 +22,13 @@ namespace shatter {
 using SettingOverrides = std::map<std::string, PluginSettings, std::less<>>;
 
 /// Reads `--set` values "NAME.KEY=VALUE": NAME a registered name (it may hold '.', the last '.'
-/// before '=' ends it), KEY snake_case, VALUE `true`, `false`, a finite number, or any other text.
+/// before '=' ends it), KEY snake_case, VALUE `true`, `false`, a finite number, or any other text
+/// without a line break.
 /// Error "--set TEXT: ..." for a malformed one or a key set twice.
 Result<SettingOverrides> parse_setting_overrides(const std::vector<std::string>& values);
+
+/// `value` as `--set` reads it back: `true`, `false`, the number with every digit, or the text.
+std::string setting_value_text(const SettingValue& value);
 
 /// Wraps the factories of the algorithms `overrides` names in `registries` as above, then creates each
 /// once with its overrides to check them. Error "--set NAME...: ..." for a name that is neither a

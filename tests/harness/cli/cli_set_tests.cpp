@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -67,4 +68,26 @@ TEST_CASE("cli --set: a malformed, unknown or out-of-range setting is one line a
   const CliRun missing = run_cli_argv({"list", "--set"});
   CHECK(missing.exit_code == 2);
   CHECK_THAT(missing.err, Catch::Contains("--set needs NAME.KEY=VALUE"));
+}
+
+TEST_CASE("cli --set: SHATTERBENCH_SET carries settings to a child run, and a flag overrides it", "[cli][settings]") {
+  if (!have_meshes()) return;
+  const std::string mesh = (mesh_dir() / "elephant.off").string();
+  const std::vector<std::string> fem = {"fracture", "--mesh", mesh, "--algo", "fem-lite", "--fragments", "10"};
+  std::vector<std::string> coarse = {"--set", "fem-lite.resolution=4"};
+  coarse.insert(coarse.end(), fem.begin(), fem.end());
+  const int coarse_count = fragment_count(run_cli_argv(coarse));
+  const int by_default = fragment_count(run_cli_argv(fem));
+  REQUIRE(coarse_count != by_default);
+  // As grid --metric instructions' child inherits it: the variable alone sets the key.
+  ::setenv("SHATTERBENCH_SET", "fem-lite.resolution=4\n", 1);
+  CHECK(fragment_count(run_cli_argv(fem)) == coarse_count);
+  std::vector<std::string> back = {"--set", "fem-lite.resolution=16"};
+  back.insert(back.end(), fem.begin(), fem.end());
+  CHECK(fragment_count(run_cli_argv(back)) == by_default);
+  ::setenv("SHATTERBENCH_SET", "fem-lite.resolution\n", 1);
+  const CliRun bad = run_cli_argv({"list"});
+  CHECK(bad.exit_code == 2);
+  CHECK_THAT(bad.err, Catch::Contains("SHATTERBENCH_SET: --set fem-lite.resolution"));
+  ::unsetenv("SHATTERBENCH_SET");
 }
