@@ -33,6 +33,14 @@ struct PluginArguments {
 
 PluginArguments take_plugin_arguments(int argc, char** argv) {
   PluginArguments out;
+  // The options taken here: `--NAME VALUE` or `--NAME=VALUE`, each value into its list.
+  struct Taken {
+    std::string_view flag;
+    std::vector<std::string>* values;
+    const char* needs;
+  };
+  const Taken taken[] = {{"--plugin", &out.paths, "--plugin needs the path of a plugin library"},
+                         {"--set", &out.sets, "--set needs NAME.KEY=VALUE"}};
   bool options = true;
   for (int i = 0; i < argc; ++i) {
     const std::string_view arg = argv[i];
@@ -41,39 +49,27 @@ PluginArguments take_plugin_arguments(int argc, char** argv) {
       continue;
     }
     if (arg == "--") options = false;
-    if (arg == "--plugin") {
-      if (i + 1 >= argc || std::string_view(argv[i + 1]).empty()) {
-        out.error = "--plugin needs the path of a plugin library";
-        return out;
+    const Taken* match = nullptr;
+    std::string_view value;
+    for (const Taken& t : taken) {
+      if (arg == t.flag) {
+        match = &t;
+        value = i + 1 < argc ? std::string_view(argv[++i]) : std::string_view();
+      } else if (arg.size() > t.flag.size() && arg.starts_with(t.flag) && arg[t.flag.size()] == '=') {
+        match = &t;
+        value = arg.substr(t.flag.size() + 1);
       }
-      out.paths.emplace_back(argv[++i]);
+      if (match != nullptr) break;
+    }
+    if (match == nullptr) {
+      out.argv.push_back(argv[i]);
       continue;
     }
-    if (arg == "--set") {
-      if (i + 1 >= argc || std::string_view(argv[i + 1]).empty()) {
-        out.error = "--set needs NAME.KEY=VALUE";
-        return out;
-      }
-      out.sets.emplace_back(argv[++i]);
-      continue;
+    if (value.empty()) {
+      out.error = match->needs;
+      return out;
     }
-    if (arg.starts_with("--set=")) {
-      if (arg.size() == 6) {
-        out.error = "--set needs NAME.KEY=VALUE";
-        return out;
-      }
-      out.sets.emplace_back(arg.substr(6));
-      continue;
-    }
-    if (arg.starts_with("--plugin=")) {
-      if (arg.size() == 9) {
-        out.error = "--plugin needs the path of a plugin library";
-        return out;
-      }
-      out.paths.emplace_back(arg.substr(9));
-      continue;
-    }
-    out.argv.push_back(argv[i]);
+    match->values->emplace_back(value);
   }
   out.argv.push_back(nullptr);
   return out;
