@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace shatter::test {
@@ -44,6 +45,43 @@ inline Mesh make_unit_cube() {
 /// Area of a regular n-gon of circumradius r.
 inline double regular_polygon_area(int n, double r) {
   return 0.5 * n * r * r * std::sin(2.0 * 3.14159265358979323846 / n);
+}
+
+/// The surface of the cube [0, 1]^3, each face a grid of n x n squares (two triangles each), outward:
+/// rows of vertices at every k / n, as a game's grid-aligned wall.
+inline Mesh grid_cube(int n) {
+  Mesh m;
+  std::map<std::array<int, 3>, std::int32_t> index;
+  const auto vertex = [&](int i, int j, int k) {
+    const auto [it, made] = index.try_emplace({i, j, k}, static_cast<std::int32_t>(m.vertices.size()));
+    if (made) m.add_vertex(Vec3(double(i) / n, double(j) / n, double(k) / n));
+    return it->second;
+  };
+  // Each face: axis `a` fixed at `side` (0 or n), the other two axes (u, v) spanning it.
+  for (int a = 0; a < 3; ++a)
+    for (const int side : {0, n}) {
+      const int u = (a + 1) % 3, v = (a + 2) % 3;
+      for (int p = 0; p < n; ++p)
+        for (int q = 0; q < n; ++q) {
+          std::array<std::int32_t, 4> c{};
+          for (int corner = 0; corner < 4; ++corner) {
+            std::array<int, 3> at{};
+            at[a] = side;
+            at[u] = p + (corner == 1 || corner == 2 ? 1 : 0);
+            at[v] = q + (corner >= 2 ? 1 : 0);
+            c[corner] = vertex(at[0], at[1], at[2]);
+          }
+          // Outward at side n: (u, v, a) is right-handed; reversed at side 0.
+          if (side == n) {
+            m.add_triangle(c[0], c[1], c[2], FaceTag::surface);
+            m.add_triangle(c[0], c[2], c[3], FaceTag::surface);
+          } else {
+            m.add_triangle(c[0], c[2], c[1], FaceTag::surface);
+            m.add_triangle(c[0], c[3], c[2], FaceTag::surface);
+          }
+        }
+    }
+  return m;
 }
 
 }  // namespace shatter::test

@@ -2,10 +2,13 @@
 #include "algorithms/core/attribute_transfer.h"
 #include "algorithms/core/axis_projection.h"
 
+#include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/predicates.h"
+#include "algorithms/core/self_intersection.h"
 
 #include <algorithm>
 #include <cmath>
+
 #include <numeric>
 
 namespace shatter {
@@ -19,7 +22,41 @@ std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
 
 SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
                                CornerProvenance* provenance) {
+  double magnitude = 0.0;
+  for (const Vec3& v : mesh.vertices) magnitude = std::max(magnitude, v.cwiseAbs().maxCoeff());
+  // Nearest first: a wider snap is tried only when the narrower one gave an outline that could not
+  // be capped or halves that are not sound. Halves that are closed but intersect themselves at
+  // rounding scale are kept in `below` and `above` while a wider snap is tried, and returned when no
+  // snap does better.
+  std::string first_error;
+  std::size_t closed_level = kSnapRelative.size();
+  for (snap_level_ = 0; snap_level_ < kSnapRelative.size(); ++snap_level_) {
+    const SliceOutcome outcome = attempt(mesh, plane, below, above, provenance, kSnapRelative[snap_level_] * magnitude);
+    if (outcome == SliceOutcome::cut && self_intersecting_) {
+      if (closed_level == kSnapRelative.size()) closed_level = snap_level_;
+      // Later attempts write `below` and `above` only when they succeed.
+      continue;
+    }
+    if (outcome != SliceOutcome::failed) {
+      self_intersecting_ = false;
+      return outcome;
+    }
+    if (first_error.empty()) first_error = error_;
+  }
+  if (closed_level < kSnapRelative.size()) {
+    snap_level_ = closed_level;
+    self_intersecting_ = true;
+    error_.clear();
+    return SliceOutcome::cut;
+  }
+  error_ = first_error + "; the same with every wider snap distance, up to 2^-32 of the largest coordinate: " + error_;
+  return SliceOutcome::failed;
+}
+
+SliceOutcome MeshSlicer::attempt(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
+                                 CornerProvenance* provenance, double snap) {
   error_.clear();
+  irregular_ = false;
   mesh_ = &mesh;
   provenance_ = provenance;
   plane_ = plane;
@@ -27,9 +64,23 @@ SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below
   side_.resize(mesh.vertices.size());
   int positive = 0;
   int negative = 0;
+  const double snap_dot = snap * plane.normal.norm();  // the distance as a value of dot(normal, x - point)
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    const int s = plane_side(mesh.vertices[v], plane.point, plane.normal);
+    int s = plane_side(mesh.vertices[v], plane.point, plane.normal);
+    if (s != 0 && std::abs(plane.normal.dot(mesh.vertices[v] - plane.point)) <= snap_dot) {
+      s = 0;
+      irregular_ = true;
+    }
     side_[v] = static_cast<std::int8_t>(s);
+    positive += s > 0;
+    negative += s < 0;
+  }
+  if (positive == 0) return SliceOutcome::all_below;
+  if (negative == 0) return SliceOutcome::all_above;
+  snap_vertices_at_their_crossings();
+  positive = 0;
+  negative = 0;
+  for (const std::int8_t s : side_) {
     positive += s > 0;
     negative += s < 0;
   }
@@ -56,12 +107,68 @@ SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below
     half->tags.reserve(mesh.triangles.size() / 2 + 16);
   }
 
+  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) make_crossings(f);
+  merge_coinciding_outline_points();
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) split_triangle(f);
   if (!add_cap()) return SliceOutcome::failed;
+  self_intersecting_ = false;
+  if (irregular_ && !halves_are_closed(halves[below_side], halves[above_side])) return SliceOutcome::failed;
 
   below = std::move(halves[below_side]);
   above = std::move(halves[above_side]);
   return SliceOutcome::cut;
+}
+
+bool MeshSlicer::halves_are_closed(const Mesh& below, const Mesh& above) {
+  // A repair of rounding (a snapped vertex, merged points, a fold) can meet a configuration it does
+  // not settle, such as crossings of different edges rounded onto each other across a gap of the
+  // outline: the attempt fails rather than pass on an open half. Points moved by an ulp can also make
+  // two faces of a half cross at rounding scale: noted, so that a wider snap is tried for better.
+  if (!is_closed_and_oriented(below) || !is_closed_and_oriented(above)) {
+    error_ = "a half is not closed after snapping or merging near the plane";
+    return false;
+  }
+  self_intersecting_ = find_self_intersection(below).has_value() || find_self_intersection(above).has_value();
+  return true;
+}
+
+double MeshSlicer::crossing_parameter(std::int32_t p, std::int32_t m) const {
+  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
+  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
+  const double dp = plane_.normal.dot(pp - plane_.point);
+  const double dm = plane_.normal.dot(pm - plane_.point);
+  const double denom = dp - dm;
+  const double t = denom > 0 ? dp / denom : 0.5;  // the exact signs say dp > 0 > dm; round-off may not
+  return std::clamp(t, 0.0, 1.0);
+}
+
+Vec3 MeshSlicer::crossing_point(std::int32_t p, std::int32_t m, double t) const {
+  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
+  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
+  return pp + t * (pm - pp);
+}
+
+void MeshSlicer::snap_vertices_at_their_crossings() {
+  // A crossing that rounds onto one of its edge's ends would be a second point at that end's position:
+  // an edge of length zero that a later cut through the same place cannot cap. The plane passes within
+  // rounding distance of that end, so the end is taken as on the plane instead, and the edge does not
+  // cross. Sides only ever become 0 here, so one pass in triangle order settles them.
+  for (const Triangle& t : mesh_->triangles)
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t a = t[k];
+      const std::int32_t b = t[(k + 1) % 3];
+      if (side_[static_cast<std::size_t>(a)] * side_[static_cast<std::size_t>(b)] >= 0) continue;
+      const std::int32_t p = side_[static_cast<std::size_t>(a)] > 0 ? a : b;
+      const std::int32_t m = p == a ? b : a;
+      const Vec3 x = crossing_point(p, m, crossing_parameter(p, m));
+      if (x == mesh_->vertices[static_cast<std::size_t>(p)]) {
+        side_[static_cast<std::size_t>(p)] = 0;
+        irregular_ = true;
+      } else if (x == mesh_->vertices[static_cast<std::size_t>(m)]) {
+        side_[static_cast<std::size_t>(m)] = 0;
+        irregular_ = true;
+      }
+    }
 }
 
 std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
@@ -71,15 +178,9 @@ std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
   // Interpolate from the positive end so that both triangles of the edge get the same point.
   const std::int32_t p = side_[static_cast<std::size_t>(a)] > 0 ? a : b;
   const std::int32_t m = p == a ? b : a;
-  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
-  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
-  const double dp = plane_.normal.dot(pp - plane_.point);
-  const double dm = plane_.normal.dot(pm - plane_.point);
-  const double denom = dp - dm;
-  double t = denom > 0 ? dp / denom : 0.5;  // the exact signs say dp > 0 > dm; round-off may not
-  t = std::clamp(t, 0.0, 1.0);
+  const double t = crossing_parameter(p, m);
   const std::int32_t ref = vertex_count_ + static_cast<std::int32_t>(crossing_points_.size());
-  crossing_points_.push_back(pp + t * (pm - pp));
+  crossing_points_.push_back(crossing_point(p, m, t));
   crossing_ends_.push_back({p, m, t});
   index_[below_side].push_back(-1);
   index_[above_side].push_back(-1);
@@ -109,9 +210,52 @@ std::array<CornerMix, 3> MeshSlicer::corner_mixes(std::size_t f, std::int32_t r0
   return {mix_of(r0), mix_of(r1), mix_of(r2)};
 }
 
+void MeshSlicer::make_crossings(std::size_t f) {
+  const Triangle& t = mesh_->triangles[f];
+  for (int k = 0; k < 3; ++k) {
+    const std::int32_t a = t[k];
+    const std::int32_t b = t[(k + 1) % 3];
+    if (side_[static_cast<std::size_t>(a)] * side_[static_cast<std::size_t>(b)] < 0) crossing(a, b);
+  }
+}
+
+void MeshSlicer::merge_coinciding_outline_points() {
+  // The outline's points: the vertices on the plane and every crossing. Two of them at one projected
+  // position (a cut within rounding distance of an earlier cut's vertex, or crossings rounded onto each
+  // other) are one point of the cap; the triangulation needs them merged, and the halves too, or the
+  // cap would not close them.
+  const AxisProjection proj(plane_.normal);
+  const auto ref_count = static_cast<std::size_t>(vertex_count_) + crossing_points_.size();
+  merged_ = false;
+  merge_order_.clear();
+  for (std::int32_t v = 0; v < vertex_count_; ++v)
+    if (side_[static_cast<std::size_t>(v)] == 0) merge_order_.push_back({proj(position(v)), v});
+  for (std::size_t k = 0; k < crossing_points_.size(); ++k)
+    merge_order_.push_back({proj(crossing_points_[k]), vertex_count_ + static_cast<std::int32_t>(k)});
+  std::sort(merge_order_.begin(), merge_order_.end(), [](const OutlinePoint& a, const OutlinePoint& b) {
+    return a.at.x() < b.at.x() || (a.at.x() == b.at.x() && (a.at.y() < b.at.y() || (a.at.y() == b.at.y() && a.ref < b.ref)));
+  });
+  for (std::size_t i = 1; i < merge_order_.size(); ++i) {
+    if (merge_order_[i].at != merge_order_[i - 1].at) continue;
+    if (!merged_) {
+      canonical_.resize(ref_count);
+      std::iota(canonical_.begin(), canonical_.end(), 0);
+      merged_ = true;
+      irregular_ = true;
+    }
+    // Runs of equal points all map to the run's first (lowest) ref, so the choice is the same on every run.
+    canonical_[static_cast<std::size_t>(merge_order_[i].ref)] = canonical_[static_cast<std::size_t>(merge_order_[i - 1].ref)];
+  }
+}
+
 void MeshSlicer::emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2) {
+  // Indices and the outline take the merged points; attributes are mixed for the points as made.
+  const std::int32_t c0 = canonical(r0);
+  const std::int32_t c1 = canonical(r1);
+  const std::int32_t c2 = canonical(r2);
+  if (c0 == c1 || c1 == c2 || c2 == c0) return;  // collapsed by a merge: no area, and its edges cancel
   if (!attributed_) {
-    halves_[side]->add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), mesh_->tags[f]);
+    halves_[side]->add_triangle(index_in(side, c0), index_in(side, c1), index_in(side, c2), mesh_->tags[f]);
   } else if (provenance_ != nullptr) {
     const Triangle& source = mesh_->triangles[f];
     std::int32_t record = mesh_->attributes.materials[f];
@@ -121,18 +265,18 @@ void MeshSlicer::emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1
       if (!CornerProvenance::is_cap(record)) record = provenance_->mixed(record, corner_mixes(f, r0, r1, r2));
     }
     Mesh& half = *halves_[side];
-    half.add_triangle(index_in(side, r0), index_in(side, r1), index_in(side, r2), mesh_->tags[f]);
+    half.add_triangle(index_in(side, c0), index_in(side, c1), index_in(side, c2), mesh_->tags[f]);
     half.attributes.materials.push_back(record);
   } else if (const Triangle& source = mesh_->triangles[f]; r0 == source[0] && r1 == source[1] && r2 == source[2]) {
     // A triangle wholly on one side: copied with its corners as they are.
-    add_triangle_from(*halves_[side], *mesh_, f, index_in(side, r0), index_in(side, r1), index_in(side, r2));
+    add_triangle_from(*halves_[side], *mesh_, f, index_in(side, c0), index_in(side, c1), index_in(side, c2));
   } else {
-    add_triangle_mixed(*halves_[side], *mesh_, f, index_in(side, r0), index_in(side, r1), index_in(side, r2),
+    add_triangle_mixed(*halves_[side], *mesh_, f, index_in(side, c0), index_in(side, c1), index_in(side, c2),
                        corner_mixes(f, r0, r1, r2));
   }
   if (side != below_side) return;
   // Record the lower half's in-plane half-edges; twins cancel, the rest is the cut outline.
-  const std::int32_t r[3] = {r0, r1, r2};
+  const std::int32_t r[3] = {c0, c1, c2};
   for (int k = 0; k < 3; ++k) {
     const std::int32_t a = r[k];
     const std::int32_t b = r[(k + 1) % 3];
@@ -213,21 +357,12 @@ bool MeshSlicer::add_cap() {
     for (int i = 0; i < count; ++i) cap_edges_.push_back({cap_point(b), cap_point(a)});
   }
   if (cap_edges_.empty()) return true;
-  // Two outline points that round to the same position (a cut within rounding distance of an earlier
-  // cut in the same plane) would be merged by the triangulation and leave both halves open: refuse.
-  cap_order_.resize(cap_points_.size());
-  std::iota(cap_order_.begin(), cap_order_.end(), 0);
-  std::sort(cap_order_.begin(), cap_order_.end(), [&](std::int32_t a, std::int32_t b) {
-    const Vec2& p = cap_points_[static_cast<std::size_t>(a)];
-    const Vec2& q = cap_points_[static_cast<std::size_t>(b)];
-    return p.x() < q.x() || (p.x() == q.x() && p.y() < q.y());
-  });
-  for (std::size_t i = 1; i < cap_order_.size(); ++i)
-    if (cap_points_[static_cast<std::size_t>(cap_order_[i])] == cap_points_[static_cast<std::size_t>(cap_order_[i - 1])]) {
-      error_ = "two points of the cut outline coincide after rounding";
-      return false;
-    }
-  const CapTriangulation cap = triangulate_cap(cap_points_, cap_edges_);
+  const std::vector<Triangle> folds = remove_outline_folds(cap_points_, cap_edges_, unfolded_edges_);
+  if (!folds.empty()) irregular_ = true;
+  const std::vector<CapEdge>& edges = folds.empty() ? cap_edges_ : unfolded_edges_;
+  CapTriangulation cap;
+  if (!edges.empty()) cap = triangulate_cap(cap_points_, edges);
+  cap.triangles.insert(cap.triangles.end(), folds.begin(), folds.end());
   if (!cap.ok) {
     error_ = "cap triangulation failed: " + cap.error;
     return false;

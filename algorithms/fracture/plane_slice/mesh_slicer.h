@@ -23,6 +23,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/plane.h"
 #include "algorithms/fracture/plane_slice/cap_closure.h"
+#include "algorithms/fracture/plane_slice/outline_folds.h"
 #include "algorithms/core/cap_triangulator.h"
 
 #include <absl/container/flat_hash_map.h>
@@ -40,8 +41,17 @@ enum class SliceOutcome {
   cut,         ///< both halves non-empty
   all_below,   ///< the plane does not cut the mesh; nothing written
   all_above,   ///< the plane does not cut the mesh; nothing written
-  failed,      ///< the cut outline could not be capped (outline points coinciding or edges crossing
+  failed,      ///< the cut outline could not be capped (outline edges crossing
                ///< after rounding); nothing written, so a caller never gets an open half
+};
+
+/// What the planes of a call did to the pieces they met: every plane meets every piece once.
+struct CutTally {
+  int cuts = 0;    ///< a piece split in two
+  int misses = 0;  ///< a piece wholly on one side (its vertices within the snap distance count as on the plane)
+  int failed = 0;  ///< a piece crossed whose cut could not be capped (left whole or refused, as the caller says)
+  int widened = 0; ///< cuts (of `cuts`) made only with a wider snap than the first (MeshSlicer::kSnapRelative)
+  int self_intersecting = 0;  ///< cuts (of `cuts`) whose halves cross themselves at rounding scale (MeshSlicer)
 };
 
 /// Splits closed meshes by planes.
@@ -55,15 +65,45 @@ class MeshSlicer {
   SliceOutcome slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
                      CornerProvenance* provenance = nullptr);
 
+  /// Which snap distance the last slice was settled with (an index into kSnapRelative: 0 unless a
+  /// fallback was needed).
+  [[nodiscard]] std::size_t snap_level() const { return snap_level_; }
+
+  /// Whether the halves of the last cut intersect themselves at rounding scale: closed, with the
+  /// volume and partition exact, but two faces crossing within an ulp where points were snapped or
+  /// merged (no snap distance did better). Such a half is refused as input by the acceptance rule.
+  [[nodiscard]] bool self_intersecting() const { return self_intersecting_; }
+
+  /// Snap distances, relative to the largest coordinate of the mesh sliced: a vertex this near the
+  /// plane is on it. The first (16 ulps) takes the rounded points of an earlier cut in the same plane
+  /// as on it, so that cutting there again is a no-op rather than a shower of slivers; the wider
+  /// ones (about 1e-12 and 2e-10 of the size) are tried, in order, only when the narrower one gave an
+  /// outline that could not be capped or halves that are not sound.
+  static constexpr std::array<double, 3> kSnapRelative = {0x1p-48, 0x1p-40, 0x1p-32};
+
   /// Why the last slice failed (empty unless it returned `failed`).
   [[nodiscard]] const std::string& error() const { return error_; }
 
  private:
+  /// One slice with the vertices within `snap` of the plane taken as on it.
+  SliceOutcome attempt(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
+                       CornerProvenance* provenance, double snap);
+  /// Whether the halves of an attempt that snapped, merged or unfolded are closed (error_ says why
+  /// not); sets self_intersecting_.
+  bool halves_are_closed(const Mesh& below, const Mesh& above);
   enum Side : int { below_side = 0, above_side = 1 };
   std::int32_t crossing(std::int32_t a, std::int32_t b);
   std::int32_t index_in(Side side, std::int32_t ref);
   [[nodiscard]] std::array<CornerMix, 3> corner_mixes(std::size_t f, std::int32_t r0, std::int32_t r1,
                                                       std::int32_t r2) const;
+  [[nodiscard]] double crossing_parameter(std::int32_t p, std::int32_t m) const;
+  [[nodiscard]] Vec3 crossing_point(std::int32_t p, std::int32_t m, double t) const;
+  void snap_vertices_at_their_crossings();
+  void make_crossings(std::size_t f);
+  void merge_coinciding_outline_points();
+  [[nodiscard]] std::int32_t canonical(std::int32_t ref) const {
+    return merged_ ? canonical_[static_cast<std::size_t>(ref)] : ref;
+  }
   void emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2);
   void split_triangle(std::size_t f);
   bool add_cap();
@@ -101,7 +141,18 @@ class MeshSlicer {
   absl::flat_hash_map<std::int32_t, std::int32_t> cap_point_of_ref_;  // lookups only
   std::vector<Vec2> cap_points_;
   std::vector<CapEdge> cap_edges_;
-  std::vector<std::int32_t> cap_order_;                 // cap points sorted by position
+  std::vector<CapEdge> unfolded_edges_;                 // cap_edges_ with folds taken off (outline_folds.h)
+  /// An outline point (a vertex on the plane or a crossing) at its projected position.
+  struct OutlinePoint {
+    Vec2 at;
+    std::int32_t ref;
+  };
+  std::vector<OutlinePoint> merge_order_;               // outline points sorted by position
+  bool merged_ = false;                                 // some outline points coincide this slice
+  bool irregular_ = false;
+  std::size_t snap_level_ = 0;
+  bool self_intersecting_ = false;  // this attempt snapped, merged or unfolded: its halves are checked closed
+  std::vector<std::int32_t> canonical_;                 // per ref: the ref it is merged into (when merged_)
   HalfEdgeCounts cap_halfedges_;  // scratch of cap_closes_outline (cap_closure.h)
   std::string error_;
 };

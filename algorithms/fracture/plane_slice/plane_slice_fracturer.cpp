@@ -43,15 +43,19 @@ Result<std::optional<std::vector<Fragment>>> PlaneSliceFracturer::cut_by_planes(
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,
                                                                       int max_fragments,
                                                                       SelfIntersectionVerdicts* verdicts,
-                                                                      FailedCut failed) const {
+                                                                      FailedCut failed, CutTally* tally) const {
   if (Status s = check_fracture_solid(solid, "plane-slice", verdicts, AttributeValues::at_use); !s)
     return s.error();
   if (Status s = check_planes(planes); !s) return s.error();
   std::optional<CornerProvenance> provenance = provenance_for(solid);
   CornerProvenance* tracking = provenance ? &*provenance : nullptr;
-  const SliceKernel kernel(tracking);
+  // Every cut made when the caller must have them all; a cut whose halves cross themselves at
+  // rounding scale leaves its piece whole when the caller keeps such pieces whole anyway.
+  const SliceKernel kernel(tracking, failed == FailedCut::refuse ? SliceKernel::RoundingCrossings::keep
+                                                                 : SliceKernel::RoundingCrossings::fail);
   auto pieces = slice_by_planes(kernel, start_pieces(solid, tracking), planes,
                                 static_cast<std::size_t>(std::max(max_fragments, 1)));
+  if (tally != nullptr) *tally = kernel.tally();
   if (!pieces) return Error{"plane-slice: " + pieces.error().message};
   // A plane that misses a piece leaves it whole by design; a cut that crossed a piece but could not
   // be made would leave fewer fragments than the planes make, so it fails the whole call.

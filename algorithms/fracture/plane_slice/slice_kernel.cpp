@@ -11,8 +11,25 @@ void SliceKernel::split(const Piece& piece, const Plane& plane, std::vector<Piec
   Mesh lower;
   Mesh upper;
   const SliceOutcome outcome = slicer_.slice(piece.mesh, plane, lower, upper, provenance_);
-  if (outcome == SliceOutcome::failed && failed_cuts_++ == 0) first_failure_ = slicer_.error();
-  if (outcome != SliceOutcome::cut) return;
+  switch (outcome) {
+    case SliceOutcome::cut:
+      if (slicer_.self_intersecting() && crossings_ == RoundingCrossings::fail) {
+        if (tally_.failed++ == 0)
+          first_failure_ = "every snap distance gave a half that intersects itself at rounding scale";
+        return;
+      }
+      ++tally_.cuts;
+      if (slicer_.snap_level() > 0) ++tally_.widened;
+      if (slicer_.self_intersecting()) ++tally_.self_intersecting;
+      break;
+    case SliceOutcome::all_below:
+    case SliceOutcome::all_above:
+      ++tally_.misses;
+      return;
+    case SliceOutcome::failed:
+      if (tally_.failed++ == 0) first_failure_ = slicer_.error();
+      return;
+  }
   append_parts(std::move(lower), below);
   append_parts(std::move(upper), above);
 }

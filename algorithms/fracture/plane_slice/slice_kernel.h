@@ -18,8 +18,15 @@ namespace shatter {
 /// Cuts pieces by planes (MeshSlicer), each side split into its volumes.
 class SliceKernel {
  public:
+  /// What a cut whose halves are closed but cross themselves at rounding scale counts as
+  /// (MeshSlicer::self_intersecting).
+  enum class RoundingCrossings {
+    fail,  ///< a failed cut: the piece stays whole, so every piece passes the acceptance rule again
+    keep,  ///< a cut made (counted in CutTally::self_intersecting): every plane cuts what it crosses
+  };
   /// Tracks the corners through `provenance` when given (an attributed solid), else cuts plain meshes.
-  explicit SliceKernel(CornerProvenance* provenance) : provenance_(provenance) {}
+  explicit SliceKernel(CornerProvenance* provenance, RoundingCrossings crossings = RoundingCrossings::fail)
+      : provenance_(provenance), crossings_(crossings) {}
 
   /// A closed piece with its volume and centroid (a piece may be cut again, so its second moments
   /// wait for the fragments: to_fragments).
@@ -37,15 +44,18 @@ class SliceKernel {
   /// The volumes of `mesh` (each an outer shell with its cavities) as pieces.
   static void append_parts(Mesh&& mesh, std::vector<Piece>& out);
 
+  /// The cuts made, missed and failed so far (a failed cut's piece was kept whole).
+  [[nodiscard]] const CutTally& tally() const { return tally_; }
   /// Cuts the slicer could not cap; those pieces were kept whole.
-  [[nodiscard]] int failed_cuts() const { return failed_cuts_; }
+  [[nodiscard]] int failed_cuts() const { return tally_.failed; }
   /// Why the first of them failed ("" when none did).
   [[nodiscard]] const std::string& first_failure() const { return first_failure_; }
 
  private:
   CornerProvenance* provenance_;
+  RoundingCrossings crossings_;
   mutable MeshSlicer slicer_;
-  mutable int failed_cuts_ = 0;
+  mutable CutTally tally_;
   mutable std::string first_failure_;
 };
 

@@ -193,8 +193,9 @@ TEST_CASE("plane-slice: bad parameters are errors, not crashes", "[plane-slice]"
 
 TEST_CASE("plane-slice: a cut within rounding distance of an earlier cut never opens a piece", "[plane-slice]") {
   // A Voronoi cell piece whose earlier cut lies within rounding distance of the plane y = 0.0431...:
-  // two outline points round to one position. The slicer must refuse (the piece stays whole and
-  // closed) rather than return open halves. Fixture format: V F, V lines of hex-float x y z, F lines.
+  // two outline points round to one position. The slicer must cut it into closed halves or find that
+  // the plane misses it (the earlier cut's points within its snap distance), never fail or return
+  // open halves. Fixture format: V F, V lines of hex-float x y z, F lines.
   std::FILE* f = std::fopen(SHATTER_SOURCE_DIR "/tests/fixtures/coincident_cut_piece.txt", "r");
   REQUIRE(f != nullptr);
   std::size_t nv = 0, nf = 0;
@@ -215,12 +216,10 @@ TEST_CASE("plane-slice: a cut within rounding distance of an earlier cut never o
   MeshSlicer slicer;
   Mesh below, above;
   const SliceOutcome outcome = slicer.slice(piece, {Vec3(0, 0.04318053211960312, 0), Vec3(0, 1, 0)}, below, above);
+  REQUIRE(outcome != SliceOutcome::failed);
   if (outcome == SliceOutcome::cut) {
     CHECK(is_closed_and_oriented(below));
     CHECK(is_closed_and_oriented(above));
-  } else {
-    CHECK(outcome == SliceOutcome::failed);
-    CHECK_FALSE(slicer.error().empty());
   }
 }
 
