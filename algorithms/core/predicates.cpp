@@ -267,6 +267,21 @@ int plane_side(const Vec3& p, const Vec3& origin, const Vec3& normal) {
   return plane_side_slow(p, origin, normal);
 }
 
+int plane_side_snapped(const Vec3& p, const Vec3& origin, const Vec3& normal, double snap_dot, bool& snapped) {
+  const double tx = normal.x() * (p.x() - origin.x());
+  const double ty = normal.y() * (p.y() - origin.y());
+  const double tz = normal.z() * (p.z() - origin.z());
+  const double det = tx + ty + tz;
+  if (std::abs(det) <= snap_dot) {
+    snapped = plane_side_slow(p, origin, normal) != 0;
+    return 0;
+  }
+  const double bound = kPlaneBound * (std::abs(tx) + std::abs(ty) + std::abs(tz));
+  if (det > bound) return 1;
+  if (-det > bound) return -1;
+  return plane_side_slow(p, origin, normal);
+}
+
 int orient2d(const Vec2& a, const Vec2& b, const Vec2& c) {
   const double left = (a.x() - c.x()) * (b.y() - c.y());
   const double right = (a.y() - c.y()) * (b.x() - c.x());

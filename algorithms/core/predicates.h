@@ -10,6 +10,11 @@ namespace shatter {
 /// Sign of dot(normal, p - origin): +1 on the positive side, -1 on the negative side, 0 exactly on.
 int plane_side(const Vec3& p, const Vec3& origin, const Vec3& normal);
 
+/// plane_side with a snap: 0 also when the computed dot(normal, p - origin) is within `snap_dot` of
+/// zero, and then `snapped` is set when the exact side is not 0. One rounded dot product for the
+/// vertices clear of the snap band, as plane_side's filter.
+int plane_side_snapped(const Vec3& p, const Vec3& origin, const Vec3& normal, double snap_dot, bool& snapped);
+
 /// Sign of the signed area of (a, b, c): +1 counter-clockwise, -1 clockwise, 0 collinear.
 int orient2d(const Vec2& a, const Vec2& b, const Vec2& c);
 

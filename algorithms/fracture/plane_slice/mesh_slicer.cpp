@@ -31,7 +31,10 @@ SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below
   std::string first_error;
   std::size_t closed_level = kSnapRelative.size();
   for (snap_level_ = 0; snap_level_ < kSnapRelative.size(); ++snap_level_) {
-    const SliceOutcome outcome = attempt(mesh, plane, below, above, provenance, kSnapRelative[snap_level_] * magnitude);
+    const double snap = kSnapRelative[snap_level_] * magnitude;
+    SliceOutcome outcome = attempt(mesh, plane, below, above, provenance, snap, false);
+    // Outline points that coincide: again, merging them (an extra pass the usual cut does not pay).
+    if (outcome == SliceOutcome::failed && coinciding_) outcome = attempt(mesh, plane, below, above, provenance, snap, true);
     if (outcome == SliceOutcome::cut && self_intersecting_) {
       if (closed_level == kSnapRelative.size()) closed_level = snap_level_;
       // Later attempts write `below` and `above` only when they succeed.
@@ -54,9 +57,10 @@ SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below
 }
 
 SliceOutcome MeshSlicer::attempt(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
-                                 CornerProvenance* provenance, double snap) {
+                                 CornerProvenance* provenance, double snap, bool merge) {
   error_.clear();
   irregular_ = false;
+  coinciding_ = false;
   mesh_ = &mesh;
   provenance_ = provenance;
   plane_ = plane;
@@ -65,25 +69,15 @@ SliceOutcome MeshSlicer::attempt(const Mesh& mesh, const Plane& plane, Mesh& bel
   int positive = 0;
   int negative = 0;
   const double snap_dot = snap * plane.normal.norm();  // the distance as a value of dot(normal, x - point)
+  bool snapped = false;
   for (std::size_t v = 0; v < mesh.vertices.size(); ++v) {
-    int s = plane_side(mesh.vertices[v], plane.point, plane.normal);
-    if (s != 0 && std::abs(plane.normal.dot(mesh.vertices[v] - plane.point)) <= snap_dot) {
-      s = 0;
-      irregular_ = true;
-    }
+    const int s = plane_side_snapped(mesh.vertices[v], plane.point, plane.normal, snap_dot, snapped);
     side_[v] = static_cast<std::int8_t>(s);
     positive += s > 0;
     negative += s < 0;
   }
-  if (positive == 0) return SliceOutcome::all_below;
-  if (negative == 0) return SliceOutcome::all_above;
-  snap_vertices_at_their_crossings();
-  positive = 0;
-  negative = 0;
-  for (const std::int8_t s : side_) {
-    positive += s > 0;
-    negative += s < 0;
-  }
+  // A vertex taken as on the plane that is not exactly on it: the halves are checked (halves_are_closed).
+  irregular_ = snapped;
   if (positive == 0) return SliceOutcome::all_below;
   if (negative == 0) return SliceOutcome::all_above;
 
@@ -107,8 +101,11 @@ SliceOutcome MeshSlicer::attempt(const Mesh& mesh, const Plane& plane, Mesh& bel
     half->tags.reserve(mesh.triangles.size() / 2 + 16);
   }
 
-  for (std::size_t f = 0; f < mesh.triangles.size(); ++f) make_crossings(f);
-  merge_coinciding_outline_points();
+  merged_ = false;
+  if (merge) {
+    for (std::size_t f = 0; f < mesh.triangles.size(); ++f) make_crossings(f);
+    merge_coinciding_outline_points();
+  }
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) split_triangle(f);
   if (!add_cap()) return SliceOutcome::failed;
   self_intersecting_ = false;
@@ -146,29 +143,6 @@ Vec3 MeshSlicer::crossing_point(std::int32_t p, std::int32_t m, double t) const 
   const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
   const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
   return pp + t * (pm - pp);
-}
-
-void MeshSlicer::snap_vertices_at_their_crossings() {
-  // A crossing that rounds onto one of its edge's ends would be a second point at that end's position:
-  // an edge of length zero that a later cut through the same place cannot cap. The plane passes within
-  // rounding distance of that end, so the end is taken as on the plane instead, and the edge does not
-  // cross. Sides only ever become 0 here, so one pass in triangle order settles them.
-  for (const Triangle& t : mesh_->triangles)
-    for (int k = 0; k < 3; ++k) {
-      const std::int32_t a = t[k];
-      const std::int32_t b = t[(k + 1) % 3];
-      if (side_[static_cast<std::size_t>(a)] * side_[static_cast<std::size_t>(b)] >= 0) continue;
-      const std::int32_t p = side_[static_cast<std::size_t>(a)] > 0 ? a : b;
-      const std::int32_t m = p == a ? b : a;
-      const Vec3 x = crossing_point(p, m, crossing_parameter(p, m));
-      if (x == mesh_->vertices[static_cast<std::size_t>(p)]) {
-        side_[static_cast<std::size_t>(p)] = 0;
-        irregular_ = true;
-      } else if (x == mesh_->vertices[static_cast<std::size_t>(m)]) {
-        side_[static_cast<std::size_t>(m)] = 0;
-        irregular_ = true;
-      }
-    }
 }
 
 std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
@@ -246,6 +220,18 @@ void MeshSlicer::merge_coinciding_outline_points() {
     // Runs of equal points all map to the run's first (lowest) ref, so the choice is the same on every run.
     canonical_[static_cast<std::size_t>(merge_order_[i].ref)] = canonical_[static_cast<std::size_t>(merge_order_[i - 1].ref)];
   }
+}
+
+bool MeshSlicer::has_coinciding_points() {
+  cap_order_.resize(cap_points_.size());
+  std::iota(cap_order_.begin(), cap_order_.end(), 0);
+  const auto at = [&](std::int32_t i) -> const Vec2& { return cap_points_[static_cast<std::size_t>(i)]; };
+  std::sort(cap_order_.begin(), cap_order_.end(), [&](std::int32_t a, std::int32_t b) {
+    return at(a).x() < at(b).x() || (at(a).x() == at(b).x() && at(a).y() < at(b).y());
+  });
+  for (std::size_t i = 1; i < cap_order_.size(); ++i)
+    if (at(cap_order_[i]) == at(cap_order_[i - 1])) return true;
+  return false;
 }
 
 void MeshSlicer::emit(Side side, std::size_t f, std::int32_t r0, std::int32_t r1, std::int32_t r2) {
@@ -357,6 +343,13 @@ bool MeshSlicer::add_cap() {
     for (int i = 0; i < count; ++i) cap_edges_.push_back({cap_point(b), cap_point(a)});
   }
   if (cap_edges_.empty()) return true;
+  if (!merged_ && has_coinciding_points()) {
+    // Two outline points at one position (a cut within rounding distance of an earlier cut's vertex,
+    // or crossings rounded onto each other): the caller tries again, merging them.
+    coinciding_ = true;
+    error_ = "two points of the cut outline coincide after rounding";
+    return false;
+  }
   const std::vector<Triangle> folds = remove_outline_folds(cap_points_, cap_edges_, unfolded_edges_);
   if (!folds.empty()) irregular_ = true;
   const std::vector<CapEdge>& edges = folds.empty() ? cap_edges_ : unfolded_edges_;

@@ -87,7 +87,9 @@ class MeshSlicer {
  private:
   /// One slice with the vertices within `snap` of the plane taken as on it.
   SliceOutcome attempt(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
-                       CornerProvenance* provenance, double snap);
+                       CornerProvenance* provenance, double snap, bool merge);
+  /// Whether two cap points share a position (sorts cap_order_).
+  bool has_coinciding_points();
   /// Whether the halves of an attempt that snapped, merged or unfolded are closed (error_ says why
   /// not); sets self_intersecting_.
   bool halves_are_closed(const Mesh& below, const Mesh& above);
@@ -98,7 +100,6 @@ class MeshSlicer {
                                                       std::int32_t r2) const;
   [[nodiscard]] double crossing_parameter(std::int32_t p, std::int32_t m) const;
   [[nodiscard]] Vec3 crossing_point(std::int32_t p, std::int32_t m, double t) const;
-  void snap_vertices_at_their_crossings();
   void make_crossings(std::size_t f);
   void merge_coinciding_outline_points();
   [[nodiscard]] std::int32_t canonical(std::int32_t ref) const {
@@ -148,7 +149,9 @@ class MeshSlicer {
     std::int32_t ref;
   };
   std::vector<OutlinePoint> merge_order_;               // outline points sorted by position
-  bool merged_ = false;                                 // some outline points coincide this slice
+  std::vector<std::int32_t> cap_order_;                 // cap points sorted by position
+  bool merged_ = false;                                 // some outline points were merged this attempt
+  bool coinciding_ = false;                             // the attempt failed on coinciding outline points
   bool irregular_ = false;
   std::size_t snap_level_ = 0;
   bool self_intersecting_ = false;  // this attempt snapped, merged or unfolded: its halves are checked closed
