@@ -249,3 +249,26 @@ TEST_CASE("predicates: plane_side matches exact integer arithmetic", "[predicate
     }
   }
 }
+
+TEST_CASE("plane_side_snapped: within the snap band on the plane, flagged when not exactly on it", "[predicates]") {
+  const Vec3 origin(0.25, 0.0, 0.0);
+  const Vec3 normal(1.0, 0.0, 0.0);
+  bool snapped = false;
+  // Exactly on the plane: 0, not a snap.
+  CHECK(shatter::plane_side_snapped(Vec3(0.25, 3.0, -2.0), origin, normal, 1e-14, snapped) == 0);
+  CHECK_FALSE(snapped);
+  // One ulp off the plane (5.55e-17 at 0.25): 0 with a snap band of 1e-14, flagged; exact without.
+  const Vec3 near(std::nextafter(0.25, 1.0), 0.5, 0.5);
+  CHECK(shatter::plane_side_snapped(near, origin, normal, 1e-14, snapped) == 0);
+  CHECK(snapped);
+  snapped = false;
+  CHECK(shatter::plane_side_snapped(near, origin, normal, 0.0, snapped) == 1);
+  CHECK_FALSE(snapped);
+  // Clear of the band: the exact side, whatever the band.
+  CHECK(shatter::plane_side_snapped(Vec3(0.25 - 1e-12, 0.0, 0.0), origin, normal, 1e-14, snapped) == -1);
+  CHECK(shatter::plane_side_snapped(Vec3(0.25 - 1e-12, 0.0, 0.0), origin, normal, 0.0, snapped) == shatter::plane_side(Vec3(0.25 - 1e-12, 0.0, 0.0), origin, normal));
+  // The band is a value of dot(normal, p - origin): a normal of length 4 makes 1e-12 of distance 4e-12.
+  snapped = false;
+  CHECK(shatter::plane_side_snapped(Vec3(0.25 + 1e-12, 0.0, 0.0), origin, 4.0 * normal, 5e-12, snapped) == 0);
+  CHECK(snapped);
+}
