@@ -1,8 +1,9 @@
 #pragma once
 /// The slicing kernel: one closed mesh, one plane, two closed meshes.
 ///
-/// Design note: topology is decided by exact predicates only (which side of the plane each vertex is
-/// on, exactly), geometry is then constructed in double (the crossing points). Every edge that crosses
+/// Design note: topology is decided by predicates (which side of the plane each vertex is on: exact,
+/// but a vertex within a snap distance of the plane is on it), geometry is then constructed in double
+/// (the crossing points). Every edge that crosses
 /// the plane gets one crossing point shared by both triangles on it, so both halves stay closed by
 /// construction. Faces lying in the plane go to the side they bound (their normal points away from
 /// it). The cut's outline is not traced as loops: it is the set of half-edges of the lower half that
@@ -10,6 +11,15 @@
 /// many loops, holes, nested loops or touching loops it has. The cap is one constrained Delaunay
 /// triangulation of that outline in an axis-aligned projection (exact: no rotation of coordinates),
 /// used as is for the lower half and reversed for the upper half.
+///
+/// Rounding: the crossings are rounded, so a later cut near an earlier cut's points meets outline
+/// points that coincide (merged, in both halves, into one: the ulp-long edges between them collapse)
+/// and outlines that run out and straight back (folds, closed by flat cap triangles:
+/// outline_folds.h). The first snap distance (16 ulps of the largest coordinate) makes a plane
+/// through an earlier cap a miss; when a cut still cannot be capped, or a repair left a half open, it
+/// is tried with the wider snaps. Every attempt that snapped, merged or unfolded has its halves checked
+/// closed (and for self-intersection, which a wider snap may avoid). docs/plugins.md ("The cutting
+/// kernel") states the guarantees and the measured cost.
 ///
 /// Attributes (mesh_attributes.h): a corner at a crossing gets its triangle's two corner values mixed
 /// at the parameter its position was made with, measured from the edge's positive end as the position
@@ -152,9 +162,9 @@ class MeshSlicer {
   std::vector<std::int32_t> cap_order_;                 // cap points sorted by position
   bool merged_ = false;                                 // some outline points were merged this attempt
   bool coinciding_ = false;                             // the attempt failed on coinciding outline points
-  bool irregular_ = false;
+  bool irregular_ = false;                              // this attempt snapped, merged or unfolded: halves checked
   std::size_t snap_level_ = 0;
-  bool self_intersecting_ = false;  // this attempt snapped, merged or unfolded: its halves are checked closed
+  bool self_intersecting_ = false;                      // the halves cross themselves at rounding scale
   std::vector<std::int32_t> canonical_;                 // per ref: the ref it is merged into (when merged_)
   HalfEdgeCounts cap_halfedges_;  // scratch of cap_closes_outline (cap_closure.h)
   std::string error_;
