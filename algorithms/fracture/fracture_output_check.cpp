@@ -4,6 +4,7 @@
 #include "algorithms/core/mass_properties.h"
 #include "algorithms/core/mesh_validation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdint>
@@ -46,6 +47,12 @@ std::string mesh_defect(const Mesh& mesh) {
 }
 
 }  // namespace
+
+FractureOutputLimits limits_with_stated_tolerance(double stated) {
+  FractureOutputLimits limits;
+  if (std::isfinite(stated)) limits.max_volume_error = std::max(limits.max_volume_error, std::min(stated, kMaxStatedVolumeTolerance));
+  return limits;
+}
 
 Status check_fracture_output(const Mesh& input, const std::vector<Fragment>& fragments, std::string_view algorithm,
                              const FractureOutputLimits& limits) {

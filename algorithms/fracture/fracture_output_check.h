@@ -31,6 +31,13 @@ struct FractureOutputLimits {
   double max_mass_error = 1e-9;
 };
 
+/// The most volume error a fracturer may state (Fracturer::volume_tolerance): a tenth of the input's.
+inline constexpr double kMaxStatedVolumeTolerance = 0.1;
+
+/// The default limits, with the volume error a fracturer stated (clamped to [0,
+/// kMaxStatedVolumeTolerance]; not a finite number counts as 0) when that is above the default's.
+FractureOutputLimits limits_with_stated_tolerance(double stated);
+
 /// Error unless `fragments` is a valid fracture of `input` (a closed solid of positive volume): at
 /// least one and at most `limits.max_fragments` fragments; in each, finite vertices, every index in
 /// range and no repeated corner, one tag of a known kind per triangle, attributes consistent with

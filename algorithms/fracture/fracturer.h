@@ -68,6 +68,11 @@ class Fracturer {
   }
   /// True for an exact reference: the fracturer others are replayed with, not itself measured.
   [[nodiscard]] virtual bool exact_reference() const { return false; }
+  /// The relative volume error |sum of the fragments' volumes - the input's| / the input's that this
+  /// fracturer's fragments may carry by design: 0 (the default) for cuts that keep the volume to
+  /// round-off; an approximate method (a level set on a voxel grid) states its own. The host's output
+  /// check accepts up to it (fracture_output_check.h: at most kMaxStatedVolumeTolerance).
+  [[nodiscard]] virtual double volume_tolerance() const { return 0.0; }
 };
 
 }  // namespace shatter

@@ -78,7 +78,7 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
   const AttributeMetrics a = attribute_metrics(solid.mesh, fragments);
   if (a.measured) p.figures["attributes"] = attribute_metrics_json(a);
   // An invalid fracture has no accuracy: its failed checks are reported and it stays off the front.
-  std::vector<std::string> failed = failed_fracture_checks(m);
+  std::vector<std::string> failed = failed_fracture_checks(m, acceptance_for(*s.fracturer));
   for (std::string& check : failed_attribute_checks(a)) failed.push_back(std::move(check));
   if (!failed.empty()) {
     p.figures["failed_checks"] = failed;

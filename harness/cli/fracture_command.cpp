@@ -82,7 +82,7 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
   };
   std::cout << out.dump(2) << '\n';
   // The result is printed either way; a result its own figures call invalid is not a success.
-  std::vector<std::string> failed = failed_fracture_checks(m);
+  std::vector<std::string> failed = failed_fracture_checks(m, acceptance_for(**fracturer));
   for (std::string& check : failed_attribute_checks(a)) failed.push_back(std::move(check));
   return print_failed_checks(o.mesh, failed) > 0 ? exit_gate_failed : exit_ok;
 }

@@ -77,11 +77,12 @@ int run_table(TableOptions o, const Registries& r) {
         double ms;
         std::size_t count;
         FractureMetrics metrics;
+        FractureAcceptance acceptance;  // the fracturer's (acceptance_for)
       };
       std::vector<Row> rows;
       for (const Candidate& candidate : fracturers) {
         if (!candidate.fracturer) {
-          rows.push_back({candidate.name, candidate.error.message, true, 0.0, 0, {}});
+          rows.push_back({candidate.name, candidate.error.message, true, 0.0, 0, {}, {}});
           continue;
         }
         const Fracturer* fracturer = candidate.fracturer.get();
@@ -106,18 +107,18 @@ int run_table(TableOptions o, const Registries& r) {
           if (rep == 0) first = std::move(*fragments);
         }
         if (!refused.empty()) {
-          rows.push_back({candidate.name, refused, fault, 0.0, 0, {}});
+          rows.push_back({candidate.name, refused, fault, 0.0, 0, {}, {}});
           continue;
         }
         rows.push_back({candidate.name, {}, false, median(times), first.size(),
-                        fracture_metrics(solid.mesh, solid.mass, first, n)});
+                        fracture_metrics(solid.mesh, solid.mass, first, n), acceptance_for(*fracturer)});
       }
       double fastest = std::numeric_limits<double>::infinity();
       for (const Row& row : rows)
         if (row.refused.empty()) fastest = std::min(fastest, row.ms);
       for (const Row& row : rows)
         if (row.refused.empty())
-          for (const std::string& check : failed_fracture_checks(row.metrics))
+          for (const std::string& check : failed_fracture_checks(row.metrics, row.acceptance))
             failed.push_back(fmt::format("{} {} {} fragments: {}", mesh_name, row.algorithm, n, check));
       for (const Row& row : rows)
         if (row.fault) failed.push_back(fmt::format("{} {} {} fragments: {}", mesh_name, row.algorithm, n, row.refused));

@@ -1,8 +1,22 @@
 #include "harness/metrics/fracture_acceptance.h"
 
+#include "algorithms/fracture/fracture_output_check.h"
+
 #include <fmt/core.h>
 
+#include <algorithm>
+
 namespace shatter {
+
+FractureAcceptance acceptance_for(const Fracturer& fracturer) {
+  FractureAcceptance acceptance;
+  const double stated = limits_with_stated_tolerance(fracturer.volume_tolerance()).max_volume_error;
+  acceptance.max_volume_error = stated;
+  // A surface within a voxel of the input's misplaces the sample points in that shell, a share of the
+  // same order as the volume error.
+  acceptance.max_partition_error = std::max(acceptance.max_partition_error, stated);
+  return acceptance;
+}
 
 std::vector<std::string> failed_fracture_checks(const FractureMetrics& m, const FractureAcceptance& acceptance) {
   std::vector<std::string> failed;

@@ -8,6 +8,7 @@
 /// negative fragment, a missing or doubled one: errors of order 1), so a failed check is a real
 /// defect, not noise.
 
+#include "algorithms/fracture/fracturer.h"
 #include "harness/metrics/attribute_metrics.h"
 #include "harness/metrics/fracture_metrics.h"
 
@@ -29,6 +30,11 @@ struct FractureAcceptance {
   /// parameter or a wrong source gives errors of the size of a texel (1/4096 = 2.4e-4) or more.
   double max_attribute_error = 1e-6;
 };
+
+/// The default acceptance, with the volume error `fracturer` states by design (an approximate method:
+/// Fracturer::volume_tolerance, clamped as the host's output check clamps it) as its volume and
+/// partition thresholds when that is larger.
+FractureAcceptance acceptance_for(const Fracturer& fracturer);
 
 /// The checks `m` fails, one line each without a trailing newline, for example
 /// "volume_error 7.9 > 1e-06" or "all_closed: fragment 2: volume -0.49 is not positive"; empty when

@@ -62,7 +62,8 @@ class GuardedFracturer final : public Fracturer {
     std::optional<Result<std::vector<Fragment>>> out;
     if (Status s = contained(who_, [&] { out.emplace(inner_->fracture(solid, params)); }); !s) return s.error();
     if (!*out) return outside_error(out->error());
-    if (Status s = check_fracture_output(solid, **out, name_); !s) return fault(s);
+    if (Status s = check_fracture_output(solid, **out, name_, limits_with_stated_tolerance(volume_tolerance())); !s)
+      return fault(s);
     return std::move(*out);
   }
 
@@ -84,6 +85,13 @@ class GuardedFracturer final : public Fracturer {
     if (**out)
       if (Status s = check_fracture_output(solid, ***out, name_); !s) return fault(s);
     return std::move(*out);
+  }
+
+  [[nodiscard]] double volume_tolerance() const override {
+    double stated = 0.0;
+    // A plugin that cannot say is held to round-off; the check clamps what it says.
+    if (!contained(who_, [&] { stated = inner_->volume_tolerance(); })) return 0.0;
+    return stated;
   }
 
   [[nodiscard]] bool exact_reference() const override {

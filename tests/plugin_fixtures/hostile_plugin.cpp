@@ -22,8 +22,10 @@ using Spoil = std::function<shatter::Result<Fragments>(Fragments)>;
 
 class SpoiledFracturer final : public shatter::Fracturer {
  public:
-  SpoiledFracturer(std::string name, Spoil spoil) : name_(std::move(name)), spoil_(std::move(spoil)) {}
+  SpoiledFracturer(std::string name, Spoil spoil, double tolerance = 0.0)
+      : name_(std::move(name)), spoil_(std::move(spoil)), tolerance_(tolerance) {}
   [[nodiscard]] std::string_view name() const override { return name_; }
+  [[nodiscard]] double volume_tolerance() const override { return tolerance_; }
   [[nodiscard]] shatter::Result<Fragments> fracture(const shatter::Mesh& solid,
                                                     const shatter::FractureParams& params) const override {
     shatter::Result<Fragments> made = shatter::PlaneSliceFracturer().fracture(solid, params);
@@ -34,6 +36,7 @@ class SpoiledFracturer final : public shatter::Fracturer {
  private:
   std::string name_;
   Spoil spoil_;
+  double tolerance_;
 };
 
 using Corrupt = std::function<void(shatter::StressResult&)>;
@@ -81,11 +84,19 @@ class SpoiledModel final : public shatter::StressModel {
   bool null_solver_;
 };
 
-void add_fracturer(shatter::Registries& r, const std::string& name, Spoil spoil) {
+void add_fracturer(shatter::Registries& r, const std::string& name, Spoil spoil, double tolerance = 0.0) {
   r.fracturers.add(name, "breaks the plugin contract (test)", {},
-                   [name, spoil](const shatter::PluginSettings&) -> shatter::Result<std::unique_ptr<shatter::Fracturer>> {
-                     return std::unique_ptr<shatter::Fracturer>(std::make_unique<SpoiledFracturer>(name, spoil));
+                   [name, spoil, tolerance](const shatter::PluginSettings&) -> shatter::Result<std::unique_ptr<shatter::Fracturer>> {
+                     return std::unique_ptr<shatter::Fracturer>(std::make_unique<SpoiledFracturer>(name, spoil, tolerance));
                    });
+}
+
+/// Fragment 0 scaled about the origin by `factor`, its mass properties its mesh's: the volumes' sum
+/// falls short of the input's.
+Fragments shrink_first(Fragments f, double factor) {
+  for (shatter::Vec3& v : f[0].mesh.vertices) v *= factor;
+  f[0].mass = shatter::mass_properties(f[0].mesh);
+  return f;
 }
 
 void add_model(shatter::Registries& r, const std::string& name, Corrupt corrupt, bool null_solver = false) {
@@ -123,6 +134,11 @@ void register_hostile(shatter::Registries& r) {
     f[0].mass = shatter::mass_properties(f[0].mesh);
     return f;
   });
+  // Approximate methods that state a volume tolerance (Fracturer::volume_tolerance): held to it, at
+  // most 0.1; a NaN counts as 0.
+  add_fracturer(r, "approximate-within", [](Fragments f) -> shatter::Result<Fragments> { return shrink_first(std::move(f), 0.99); }, 0.05);
+  add_fracturer(r, "hostile-overstates", [](Fragments f) -> shatter::Result<Fragments> { return shrink_first(std::move(f), 0.5); }, 5.0);
+  add_fracturer(r, "hostile-nan-tolerance", [](Fragments f) -> shatter::Result<Fragments> { return shrink_first(std::move(f), 0.99); }, nan);
   add_fracturer(r, "hostile-drops", [](Fragments f) -> shatter::Result<Fragments> {
     if (f.size() > 1) f.pop_back();
     else f[0].mesh.triangles.pop_back();
