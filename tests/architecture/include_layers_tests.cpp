@@ -36,7 +36,7 @@ const std::vector<std::vector<std::string>>& layers() {
       {"harness/cases", "harness/metrics"},
       {"harness/results"},
       {"harness/pipeline", "harness/stability"},
-      {"harness/grid", "harness/accuracy", "harness/compare"},
+      {"harness/grid", "harness/accuracy", "harness/compare", "harness/history"},
       {"harness/report"},
       {"harness/cli"},
       {"fixtures"},
