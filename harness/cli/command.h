@@ -51,6 +51,8 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
 void add_compare_command(CLI::App& app, int& exit_code);
 /// `shatterbench merge`.
 void add_merge_command(CLI::App& app, int& exit_code);
+/// `shatterbench history` (its subcommand `changes`).
+void add_history_command(CLI::App& app, int& exit_code);
 /// `shatterbench table`.
 void add_table_command(CLI::App& app, int& exit_code, const Registries& registries);
 /// `shatterbench accuracy`.

@@ -175,6 +175,7 @@ int run_cli(int argc, char** argv, const Registries& builtin) {
   add_grid_command(app, exit_code, registries);
   add_compare_command(app, exit_code);
   add_merge_command(app, exit_code);
+  add_history_command(app, exit_code);
   add_table_command(app, exit_code, registries);
   add_accuracy_command(app, exit_code, registries);
   add_report_command(app, exit_code);
