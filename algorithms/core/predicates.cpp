@@ -256,29 +256,38 @@ inline Expansion<16> cross(const Expansion<2>& x1, const Expansion<2>& y2, const
 
 }  // namespace
 
-int plane_side(const Vec3& p, const Vec3& origin, const Vec3& normal) {
+namespace {
+
+/// dot(normal, p - origin) rounded, and the bound on its error beyond which its sign is exact.
+struct RoundedPlaneDot {
+  double det;
+  double bound;
+};
+
+RoundedPlaneDot rounded_plane_dot(const Vec3& p, const Vec3& origin, const Vec3& normal) {
   const double tx = normal.x() * (p.x() - origin.x());
   const double ty = normal.y() * (p.y() - origin.y());
   const double tz = normal.z() * (p.z() - origin.z());
-  const double det = tx + ty + tz;
-  const double bound = kPlaneBound * (std::abs(tx) + std::abs(ty) + std::abs(tz));
-  if (det > bound) return 1;
-  if (-det > bound) return -1;
+  return {tx + ty + tz, kPlaneBound * (std::abs(tx) + std::abs(ty) + std::abs(tz))};
+}
+
+}  // namespace
+
+int plane_side(const Vec3& p, const Vec3& origin, const Vec3& normal) {
+  const RoundedPlaneDot d = rounded_plane_dot(p, origin, normal);
+  if (d.det > d.bound) return 1;
+  if (-d.det > d.bound) return -1;
   return plane_side_slow(p, origin, normal);
 }
 
 int plane_side_snapped(const Vec3& p, const Vec3& origin, const Vec3& normal, double snap_dot, bool& snapped) {
-  const double tx = normal.x() * (p.x() - origin.x());
-  const double ty = normal.y() * (p.y() - origin.y());
-  const double tz = normal.z() * (p.z() - origin.z());
-  const double det = tx + ty + tz;
-  if (std::abs(det) <= snap_dot) {
+  const RoundedPlaneDot d = rounded_plane_dot(p, origin, normal);
+  if (std::abs(d.det) <= snap_dot) {
     snapped = plane_side_slow(p, origin, normal) != 0;
     return 0;
   }
-  const double bound = kPlaneBound * (std::abs(tx) + std::abs(ty) + std::abs(tz));
-  if (det > bound) return 1;
-  if (-det > bound) return -1;
+  if (d.det > d.bound) return 1;
+  if (-d.det > d.bound) return -1;
   return plane_side_slow(p, origin, normal);
 }
 

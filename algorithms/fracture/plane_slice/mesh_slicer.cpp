@@ -17,6 +17,9 @@ std::uint64_t edge_key(std::int32_t a, std::int32_t b) {
   return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
 }
 
+/// Projected points in x-then-y order: equal positions end up next to each other.
+bool position_before(const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); }
+
 }  // namespace
 
 SliceOutcome MeshSlicer::slice(const Mesh& mesh, const Plane& plane, Mesh& below, Mesh& above,
@@ -128,22 +131,6 @@ bool MeshSlicer::halves_are_closed(const Mesh& below, const Mesh& above) {
   return true;
 }
 
-double MeshSlicer::crossing_parameter(std::int32_t p, std::int32_t m) const {
-  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
-  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
-  const double dp = plane_.normal.dot(pp - plane_.point);
-  const double dm = plane_.normal.dot(pm - plane_.point);
-  const double denom = dp - dm;
-  const double t = denom > 0 ? dp / denom : 0.5;  // the exact signs say dp > 0 > dm; round-off may not
-  return std::clamp(t, 0.0, 1.0);
-}
-
-Vec3 MeshSlicer::crossing_point(std::int32_t p, std::int32_t m, double t) const {
-  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
-  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
-  return pp + t * (pm - pp);
-}
-
 std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
   const std::uint64_t key = edge_key(std::min(a, b), std::max(a, b));
   const auto found = crossing_of_edge_.find(key);
@@ -151,9 +138,15 @@ std::int32_t MeshSlicer::crossing(std::int32_t a, std::int32_t b) {
   // Interpolate from the positive end so that both triangles of the edge get the same point.
   const std::int32_t p = side_[static_cast<std::size_t>(a)] > 0 ? a : b;
   const std::int32_t m = p == a ? b : a;
-  const double t = crossing_parameter(p, m);
+  const Vec3& pp = mesh_->vertices[static_cast<std::size_t>(p)];
+  const Vec3& pm = mesh_->vertices[static_cast<std::size_t>(m)];
+  const double dp = plane_.normal.dot(pp - plane_.point);
+  const double dm = plane_.normal.dot(pm - plane_.point);
+  const double denom = dp - dm;
+  double t = denom > 0 ? dp / denom : 0.5;  // the exact signs say dp > 0 > dm; round-off may not
+  t = std::clamp(t, 0.0, 1.0);
   const std::int32_t ref = vertex_count_ + static_cast<std::int32_t>(crossing_points_.size());
-  crossing_points_.push_back(crossing_point(p, m, t));
+  crossing_points_.push_back(pp + t * (pm - pp));
   crossing_ends_.push_back({p, m, t});
   index_[below_side].push_back(-1);
   index_[above_side].push_back(-1);
@@ -206,7 +199,7 @@ void MeshSlicer::merge_coinciding_outline_points() {
   for (std::size_t k = 0; k < crossing_points_.size(); ++k)
     merge_order_.push_back({proj(crossing_points_[k]), vertex_count_ + static_cast<std::int32_t>(k)});
   std::sort(merge_order_.begin(), merge_order_.end(), [](const OutlinePoint& a, const OutlinePoint& b) {
-    return a.at.x() < b.at.x() || (a.at.x() == b.at.x() && (a.at.y() < b.at.y() || (a.at.y() == b.at.y() && a.ref < b.ref)));
+    return position_before(a.at, b.at) || (a.at == b.at && a.ref < b.ref);
   });
   for (std::size_t i = 1; i < merge_order_.size(); ++i) {
     if (merge_order_[i].at != merge_order_[i - 1].at) continue;
@@ -225,9 +218,7 @@ bool MeshSlicer::has_coinciding_points() {
   cap_order_.resize(cap_points_.size());
   std::iota(cap_order_.begin(), cap_order_.end(), 0);
   const auto at = [&](std::int32_t i) -> const Vec2& { return cap_points_[static_cast<std::size_t>(i)]; };
-  std::sort(cap_order_.begin(), cap_order_.end(), [&](std::int32_t a, std::int32_t b) {
-    return at(a).x() < at(b).x() || (at(a).x() == at(b).x() && at(a).y() < at(b).y());
-  });
+  std::sort(cap_order_.begin(), cap_order_.end(), [&](std::int32_t a, std::int32_t b) { return position_before(at(a), at(b)); });
   for (std::size_t i = 1; i < cap_order_.size(); ++i)
     if (at(cap_order_[i]) == at(cap_order_[i - 1])) return true;
   return false;

@@ -108,8 +108,6 @@ class MeshSlicer {
   std::int32_t index_in(Side side, std::int32_t ref);
   [[nodiscard]] std::array<CornerMix, 3> corner_mixes(std::size_t f, std::int32_t r0, std::int32_t r1,
                                                       std::int32_t r2) const;
-  [[nodiscard]] double crossing_parameter(std::int32_t p, std::int32_t m) const;
-  [[nodiscard]] Vec3 crossing_point(std::int32_t p, std::int32_t m, double t) const;
   void make_crossings(std::size_t f);
   void merge_coinciding_outline_points();
   [[nodiscard]] std::int32_t canonical(std::int32_t ref) const {
