@@ -3,10 +3,12 @@
 #include "harness/signals/interrupt_cleanup.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cstring>
 
 #include <fcntl.h>
 #include <spawn.h>
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -50,6 +52,71 @@ Result<ChildExit> run_child(const std::vector<std::string>& argv, const ChildOpt
   ChildExit result;
   result.exited = WIFEXITED(status);
   result.code = result.exited ? WEXITSTATUS(status) : (WIFSIGNALED(status) ? WTERMSIG(status) : -1);
+  return result;
+}
+
+namespace {
+
+/// Reads up to `max_bytes` of the anonymous file `fd` from its start, and closes it.
+std::string read_back(int fd, std::size_t max_bytes) {
+  std::string text;
+  if (::lseek(fd, 0, SEEK_SET) == 0) {
+    char buffer[4096];
+    while (text.size() < max_bytes) {
+      const ssize_t n = ::read(fd, buffer, std::min(sizeof buffer, max_bytes - text.size()));
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) break;
+      text.append(buffer, static_cast<std::size_t>(n));
+    }
+  }
+  ::close(fd);
+  return text;
+}
+
+}  // namespace
+
+Result<ChildOutput> run_child_output(const std::vector<std::string>& argv, const fs::path& working_folder,
+                                     std::size_t max_bytes) {
+  if (argv.empty() || argv[0].empty()) return Error{"cannot run a program without a name"};
+  const int out = ::memfd_create("child-stdout", MFD_CLOEXEC);
+  const int err = ::memfd_create("child-stderr", MFD_CLOEXEC);
+  if (out < 0 || err < 0) {
+    if (out >= 0) ::close(out);
+    if (err >= 0) ::close(err);
+    return Error{"cannot run " + argv[0] + ": " + std::strerror(errno)};
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, out, STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, err, STDERR_FILENO);
+  if (!working_folder.empty()) posix_spawn_file_actions_addchdir_np(&actions, fs::absolute(working_folder).c_str());
+  std::vector<std::string> words = argv;
+  std::vector<char*> pointers;
+  for (std::string& w : words) pointers.push_back(w.data());
+  pointers.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawnp(&pid, words[0].c_str(), &actions, nullptr, pointers.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) {
+    ::close(out);
+    ::close(err);
+    return Error{"cannot run " + argv[0] + ": " + std::strerror(spawned)};
+  }
+  const KilledOnInterrupt killed_with_us(pid);
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) {
+      ::close(out);
+      ::close(err);
+      return Error{"waiting for " + argv[0] + " failed: " + std::strerror(errno)};
+    }
+  }
+  ChildOutput result;
+  result.exit.exited = WIFEXITED(status);
+  result.exit.code = result.exit.exited ? WEXITSTATUS(status) : (WIFSIGNALED(status) ? WTERMSIG(status) : -1);
+  result.out = read_back(out, max_bytes);
+  result.err = read_back(err, max_bytes);
   return result;
 }
 

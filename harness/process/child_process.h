@@ -29,6 +29,18 @@ struct ChildExit {
 /// not installed included: "cannot run NAME: ..."), with the folder or files that could not be opened.
 Result<ChildExit> run_child(const std::vector<std::string>& argv, const ChildOptions& options = {});
 
+/// What a child wrote, as run_child_output() captured it.
+struct ChildOutput {
+  ChildExit exit;
+  std::string out;  ///< its standard output, at most `max_bytes`
+  std::string err;  ///< its standard error, at most `max_bytes`
+};
+
+/// Runs `argv` in `working_folder` (empty: this process's) with its standard output and error captured
+/// in memory (anonymous files, no temporary names); at most `max_bytes` of each is kept.
+Result<ChildOutput> run_child_output(const std::vector<std::string>& argv, const std::filesystem::path& working_folder,
+                                     std::size_t max_bytes = 1 << 20);
+
 /// True when `program` can be started and exits 0 with `argument` (e.g. "--version").
 bool program_runs(const std::string& program, const std::string& argument);
 

@@ -1,0 +1,94 @@
+#include "harness/cli/history_access.h"
+
+#include "harness/cli/command.h"
+#include "harness/history/git_commit.h"
+#include "harness/history/results_run.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <iostream>
+#include <map>
+
+namespace shatter::cli {
+
+void add_store_flags(CLI::App* cmd, StoreFlags& flags) {
+  cmd->add_option("--db", flags.db,
+                  "The history store: an SQLite file or a postgresql:// URL (default: SHATTERBENCH_DB, else "
+                  "results/history.sqlite)");
+  cmd->add_option("--lock-timeout", flags.lock_timeout_s, "Longest wait for another writer's lock on an SQLite store, s")
+      ->check(CLI::Range(0.0, 3600.0))
+      ->capture_default_str();
+}
+
+Result<HistoryStore> open_store(const StoreFlags& flags, bool create) {
+  return HistoryStore::open(history_store_location(flags.db), StoreOptions{create, flags.lock_timeout_s});
+}
+
+void add_commit_flags(CLI::App* cmd, CommitFlags& flags) {
+  cmd->add_option("--commit", flags.commit, "The commit the runs were made at (default: each file's context.commit)");
+  cmd->add_option("--repo", flags.repo, "The git repository that knows the commit (default: the working folder)");
+  cmd->add_option("--branch", flags.branch, "The branch (default: git's, or the CI's branch variable)");
+}
+
+int record_results(const std::vector<ResultsText>& results, const StoreFlags& store, const CommitFlags& commit) {
+  // Everything that can be wrong with the input is found before the store is touched.
+  std::vector<RunRecord> runs;
+  std::map<std::string, CommitInfo> commits;
+  for (const ResultsText& r : results) {
+    Result<RunRecord> run = run_from_results_text(r.text, r.source);
+    if (!run) return fail_input(run.error().message);
+    std::string revision = commit.commit;
+    if (revision.empty()) {
+      const nlohmann::json context = nlohmann::json::parse(run->context_json);
+      revision = context.value("commit", std::string{});
+      if (revision.empty()) return fail_input(r.source + ": context.commit is empty: give the commit with --commit");
+    }
+    auto known = commits.find(revision);
+    if (known == commits.end()) {
+      Result<CommitInfo> info = resolve_commit(std::filesystem::path(commit.repo.empty() ? std::string(".") : commit.repo), revision,
+                                               commit.branch);
+      if (!info) return fail_input(r.source + ": " + info.error().message);
+      known = commits.emplace(revision, *info).first;
+    }
+    run->commit = known->second;
+    runs.push_back(std::move(*run));
+  }
+  Result<HistoryStore> db = open_store(store, true);
+  if (!db) return fail_input(db.error().message);
+  for (const RunRecord& run : runs) {
+    Result<bool> added = db->record(run);
+    if (!added) return fail_input(added.error().message);
+    std::cout << fmt::format("{} {} ({} {}, {} series) at {} into {}\n", *added ? "recorded" : "already recorded",
+                             run.source, run.kind, run.case_name, run.measurements.size(), run.commit.sha.substr(0, 12),
+                             db->name());
+  }
+  return exit_ok;
+}
+
+Result<CommitInfo> recorded_commit(HistoryStore& store, const std::string& revision, const std::string& repo) {
+  Result<std::optional<CommitInfo>> found = store.find_commit(revision);
+  if (!found) return found.error();
+  if (*found) return **found;
+  Result<CommitInfo> info = resolve_commit(std::filesystem::path(repo.empty() ? std::string(".") : repo), revision);
+  if (!info) return info.error();
+  Result<std::optional<CommitInfo>> recorded = store.find_commit(info->sha);
+  if (!recorded) return recorded.error();
+  if (!*recorded) return Error{fmt::format("commit {} ({}): no run recorded at it in {}", revision, info->sha.substr(0, 12), store.name())};
+  return **recorded;
+}
+
+std::string series_label(const SeriesKey& k) {
+  return fmt::format("{} · {} · {} · {}", k.case_name, k.subject, k.what, k.metric);
+}
+
+void add_series_filter_flags(CLI::App* cmd, SeriesFilter& f) {
+  cmd->add_option("--case", f.case_name, "Only series of this case (a table's mesh file name, an accuracy case)");
+  cmd->add_option("--kind", f.kind, "Only series of runs of this command: grid, accuracy or table");
+  cmd->add_option("--subject", f.subject, "Only series whose subject contains this text (a cell, an algorithm)");
+  cmd->add_option("--what", f.what, "Only series whose part contains this text (\"worst frame\", \"stage physics\")");
+  cmd->add_option("--metric", f.metric, "Only series of this metric (cpu_ms, time_ms, instructions, volume_error, ...)");
+  cmd->add_option("--fingerprint", f.fingerprint, "Only series of this build and machine fingerprint");
+}
+
+}  // namespace shatter::cli

@@ -1,0 +1,344 @@
+#include "harness/history/store/history_store.h"
+
+#include "harness/history/store/history_schema.h"
+#include "harness/history/store/postgres_connection.h"
+#include "harness/history/store/sqlite_connection.h"
+
+#include <fmt/chrono.h>
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <unordered_map>
+
+namespace shatter {
+namespace {
+
+static_assert(std::endian::native == std::endian::little, "samples are stored as little-endian doubles");
+
+std::string now_utc() {
+  return fmt::format("{:%Y-%m-%dT%H:%M:%SZ}", fmt::gmtime(std::chrono::system_clock::to_time_t(std::chrono::system_clock::now())));
+}
+
+std::string join(const std::vector<std::string>& parts, char separator) {
+  std::string out;
+  for (const std::string& p : parts) {
+    if (!out.empty()) out += separator;
+    out += p;
+  }
+  return out;
+}
+
+std::vector<std::string> split(const std::string& text, char separator) {
+  std::vector<std::string> out;
+  std::size_t from = 0;
+  while (from < text.size()) {
+    const std::size_t to = std::min(text.find(separator, from), text.size());
+    out.push_back(text.substr(from, to - from));
+    from = to + 1;
+  }
+  return out;
+}
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+Better better_from(const std::string& name) {
+  return name == "higher" ? Better::higher : name == "none" ? Better::none : Better::lower;
+}
+
+/// Runs `sql` for `rows` rows of `width` values each, as few multi-row INSERTs as the backend's
+/// parameter limit allows.
+Status insert_rows(SqlConnection& db, const std::string& head, const std::string& tail, std::size_t width,
+                   const std::vector<SqlValue>& values) {
+  const std::size_t rows = values.size() / width;
+  const std::size_t per_statement = std::max<std::size_t>(1, std::min<std::size_t>(500, db.max_parameters() / width));
+  std::string group = "(";
+  for (std::size_t i = 0; i < width; ++i) group += i ? ", ?" : "?";
+  group += ")";
+  for (std::size_t first = 0; first < rows; first += per_statement) {
+    const std::size_t n = std::min(per_statement, rows - first);
+    std::string sql = head;
+    for (std::size_t i = 0; i < n; ++i) sql += (i ? ", " : " ") + group;
+    sql += tail;
+    std::vector<SqlValue> params(values.begin() + static_cast<std::ptrdiff_t>(first * width),
+                                 values.begin() + static_cast<std::ptrdiff_t>((first + n) * width));
+    Result<std::vector<SqlRow>> done = db.query(sql, params);
+    if (!done) return done.error();
+  }
+  return {};
+}
+
+constexpr const char* kSeriesColumns = "id, kind, case_name, fingerprint, subject, what, metric, unit, better";
+
+SeriesInfo series_from_row(const SqlRow& r) {
+  SeriesInfo s;
+  s.id = sql_int(r[0]);
+  s.key = SeriesKey{sql_text(r[1]), sql_text(r[2]), sql_text(r[3]), sql_text(r[4]), sql_text(r[5]),
+                    sql_text(r[6]), sql_text(r[7]), better_from(sql_text(r[8]))};
+  return s;
+}
+
+/// The WHERE clause of `filter` over the series table aliased `s`, and its parameters.
+std::string series_where(const SqlConnection& db, const SeriesFilter& filter, std::vector<SqlValue>& params) {
+  std::string where = "1 = 1";
+  auto equal = [&](const char* column, const std::string& value) {
+    if (value.empty()) return;
+    where += fmt::format(" AND s.{} = ?", column);
+    params.emplace_back(value);
+  };
+  // Substring match without LIKE's wildcards: the user's text is data, `%` and `_` included.
+  auto contains = [&](const char* column, const std::string& value) {
+    if (value.empty()) return;
+    where += fmt::format(fmt::runtime(db.dialect() == "sqlite" ? " AND instr(s.{}, ?) > 0" : " AND strpos(s.{}, ?) > 0"),
+                         column);
+    params.emplace_back(value);
+  };
+  equal("kind", filter.kind);
+  equal("case_name", filter.case_name);
+  equal("metric", filter.metric);
+  equal("fingerprint", filter.fingerprint);
+  contains("subject", filter.subject);
+  contains("what", filter.what);
+  return where;
+}
+
+}  // namespace
+
+const char* better_name(Better b) {
+  switch (b) {
+    case Better::lower: return "lower";
+    case Better::higher: return "higher";
+    case Better::none: return "none";
+  }
+  return "none";
+}
+
+std::int64_t series_id(const SeriesKey& key) {
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const std::string* field : {&key.kind, &key.case_name, &key.fingerprint, &key.subject, &key.what, &key.metric}) {
+    for (unsigned char c : *field) {
+      h ^= c;
+      h *= 1099511628211ULL;
+    }
+    h ^= 0x1f;
+    h *= 1099511628211ULL;
+  }
+  return static_cast<std::int64_t>(h);
+}
+
+std::string history_store_location(const std::string& flag) {
+  if (!flag.empty()) return flag;
+  if (const char* env = std::getenv("SHATTERBENCH_DB"); env != nullptr && *env != '\0') return env;
+  return kDefaultHistoryStore;
+}
+
+std::string samples_blob(const std::vector<double>& samples) {
+  std::string blob(samples.size() * sizeof(double), '\0');
+  if (!samples.empty()) std::memcpy(blob.data(), samples.data(), blob.size());
+  return blob;
+}
+
+Result<std::vector<double>> samples_from_blob(const std::string& blob) {
+  if (blob.size() % sizeof(double) != 0) return Error{fmt::format("a samples blob of {} bytes", blob.size())};
+  std::vector<double> samples(blob.size() / sizeof(double));
+  if (!samples.empty()) std::memcpy(samples.data(), blob.data(), blob.size());
+  for (double v : samples)
+    if (!std::isfinite(v)) return Error{"a samples blob holds a value that is not finite"};
+  return samples;
+}
+
+Result<HistoryStore> HistoryStore::open(const std::string& location, const StoreOptions& options) {
+  Result<std::unique_ptr<SqlConnection>> db =
+      is_postgres_url(location) ? open_postgres(location)
+                                : open_sqlite(location, SqliteOpenOptions{options.create, options.lock_timeout_s});
+  if (!db) return db.error();
+  if (Status s = migrate_history_schema(**db); !s) return s.error();
+  return HistoryStore(std::move(*db));
+}
+
+Result<bool> HistoryStore::has_run(const std::string& id) {
+  Result<std::vector<SqlRow>> rows = db_->query("SELECT 1 FROM sb_runs WHERE id = ?", {id});
+  if (!rows) return rows.error();
+  return !rows->empty();
+}
+
+Result<std::int64_t> HistoryStore::run_count() {
+  Result<std::vector<SqlRow>> rows = db_->query("SELECT count(*) FROM sb_runs", {});
+  if (!rows) return rows.error();
+  return sql_int(rows->front()[0]);
+}
+
+Result<bool> HistoryStore::record(const RunRecord& run) {
+  WriteTransaction tx(*db_);
+  if (!tx.started()) return tx.started().error();
+  const CommitInfo& c = run.commit;
+  Result<std::vector<SqlRow>> commit = db_->query(
+      "INSERT INTO sb_commits (sha, parents, branch, dirty, commit_time) VALUES (?, ?, ?, ?, ?) "
+      "ON CONFLICT (sha) DO NOTHING",
+      {c.sha, join(c.parents, ' '), c.branch, std::int64_t{c.dirty ? 1 : 0}, c.time});
+  if (!commit) return commit.error();
+  // The run's row decides: a second recorder of the same file (or a race of two) inserts nothing.
+  Result<std::vector<SqlRow>> inserted = db_->query(
+      "INSERT INTO sb_runs (id, commit_sha, kind, case_name, fingerprint, machine, source, context, settings, "
+      "passed, recorded_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING RETURNING id",
+      {run.id, c.sha, run.kind, run.case_name, run.fingerprint, run.machine, run.source, run.context_json,
+       run.settings_json, std::int64_t{run.passed ? 1 : 0}, now_utc()});
+  if (!inserted) return inserted.error();
+  if (inserted->empty()) return false;  // the transaction rolls back: nothing changed
+
+  std::vector<SqlValue> series, measurements;
+  series.reserve(run.measurements.size() * 9);
+  measurements.reserve(run.measurements.size() * 4);
+  std::unordered_map<std::int64_t, const SeriesKey*> seen;
+  for (const Measurement& m : run.measurements) {
+    const SeriesKey& k = m.series;
+    const std::int64_t id = series_id(k);
+    if (!seen.emplace(id, &k).second)
+      return Error{fmt::format("{}: the run measures {} {} {} twice", name(), k.subject, k.what, k.metric)};
+    series.insert(series.end(), {id, k.kind, k.case_name, k.fingerprint, k.subject, k.what, k.metric, k.unit,
+                                 std::string(better_name(k.better))});
+    measurements.insert(measurements.end(), {run.id, id, median_of(m.samples), SqlBlob{samples_blob(m.samples)}});
+  }
+  if (Status s = insert_rows(*db_, fmt::format("INSERT INTO sb_series ({}) VALUES", kSeriesColumns),
+                             " ON CONFLICT (id) DO NOTHING", 9, series);
+      !s)
+    return s.error();
+  if (Status s = insert_rows(*db_, "INSERT INTO sb_measurements (run_id, series_id, median, samples) VALUES", "", 4,
+                             measurements);
+      !s)
+    return s.error();
+  if (Status s = tx.commit(); !s) return s.error();
+  return true;
+}
+
+Result<std::vector<SeriesInfo>> HistoryStore::list_series(const SeriesFilter& filter) {
+  std::vector<SqlValue> params;
+  const std::string sql = fmt::format("SELECT {} FROM sb_series s WHERE {} ORDER BY kind, case_name, subject, what, metric, id",
+                                      "s.id, s.kind, s.case_name, s.fingerprint, s.subject, s.what, s.metric, s.unit, s.better",
+                                      series_where(*db_, filter, params));
+  std::vector<SeriesInfo> out;
+  Status s = db_->for_each_row(sql, params, [&out](const SqlRow& r) {
+    out.push_back(series_from_row(r));
+    return Status{};
+  });
+  if (!s) return s.error();
+  return out;
+}
+
+Result<std::vector<SeriesRun>> HistoryStore::series_runs(std::int64_t series, std::int64_t since_time) {
+  std::vector<SeriesRun> out;
+  Status s = db_->for_each_row(
+      "SELECT m.run_id, r.commit_sha, c.commit_time, r.passed, m.samples FROM sb_measurements m "
+      "JOIN sb_runs r ON r.id = m.run_id JOIN sb_commits c ON c.sha = r.commit_sha "
+      "WHERE m.series_id = ? AND c.commit_time >= ? ORDER BY c.commit_time, c.sha, r.recorded_at, m.run_id",
+      {series, since_time}, [&](const SqlRow& r) -> Status {
+        Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[4]));
+        if (!samples) return Error{fmt::format("{}: run {}: {}", name(), sql_text(r[0]), samples.error().message)};
+        out.push_back(SeriesRun{sql_text(r[0]), sql_text(r[1]), sql_int(r[2]), sql_int(r[3]) != 0, std::move(*samples)});
+        return {};
+      });
+  if (!s) return s.error();
+  return out;
+}
+
+Result<std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>>> HistoryStore::filtered_series_runs(
+    const SeriesFilter& filter, std::int64_t since_time) {
+  Result<std::vector<SeriesInfo>> list = list_series(filter);
+  if (!list) return list.error();
+  std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>> out;
+  out.reserve(list->size());
+  std::unordered_map<std::int64_t, std::size_t> at;
+  for (SeriesInfo& s : *list) {
+    at.emplace(s.id, out.size());
+    out.emplace_back(std::move(s), std::vector<SeriesRun>{});
+  }
+  if (out.empty()) return out;
+  std::vector<SqlValue> params;
+  const std::string sql = fmt::format(
+      "SELECT m.series_id, m.run_id, r.commit_sha, c.commit_time, r.passed, m.samples FROM sb_measurements m "
+      "JOIN sb_series s ON s.id = m.series_id JOIN sb_runs r ON r.id = m.run_id "
+      "JOIN sb_commits c ON c.sha = r.commit_sha WHERE {} AND c.commit_time >= ? "
+      "ORDER BY c.commit_time, c.sha, r.recorded_at, m.run_id",
+      series_where(*db_, filter, params));
+  params.emplace_back(since_time);
+  Status s = db_->for_each_row(sql, params, [&](const SqlRow& r) -> Status {
+    const auto found = at.find(sql_int(r[0]));
+    if (found == at.end()) return {};
+    Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[5]));
+    if (!samples) return Error{fmt::format("{}: run {}: {}", name(), sql_text(r[1]), samples.error().message)};
+    out[found->second].second.push_back(
+        SeriesRun{sql_text(r[1]), sql_text(r[2]), sql_int(r[3]), sql_int(r[4]) != 0, std::move(*samples)});
+    return {};
+  });
+  if (!s) return s.error();
+  return out;
+}
+
+Result<std::optional<CommitInfo>> HistoryStore::find_commit(const std::string& prefix) {
+  if (prefix.size() < 4 || prefix.size() > 40 ||
+      !std::all_of(prefix.begin(), prefix.end(), [](char ch) { return std::isxdigit(static_cast<unsigned char>(ch)); }))
+    return std::optional<CommitInfo>{};
+  std::string lower = prefix;
+  for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  Result<std::vector<SqlRow>> rows = db_->query(
+      "SELECT sha, parents, branch, dirty, commit_time FROM sb_commits WHERE sha LIKE ? LIMIT 2", {lower + "%"});
+  if (!rows) return rows.error();
+  if (rows->empty()) return std::optional<CommitInfo>{};
+  if (rows->size() > 1) return Error{fmt::format("{}: commit {} is ambiguous: give more digits", name(), prefix)};
+  const SqlRow& r = rows->front();
+  return std::optional<CommitInfo>{
+      CommitInfo{sql_text(r[0]), split(sql_text(r[1]), ' '), sql_text(r[2]), sql_int(r[3]) != 0, sql_int(r[4])}};
+}
+
+Result<std::vector<RunSummary>> HistoryStore::runs_at(const std::string& sha) {
+  Result<std::vector<SqlRow>> rows = db_->query(
+      "SELECT id, source, kind, case_name, passed FROM sb_runs WHERE commit_sha = ? ORDER BY recorded_at, id", {sha});
+  if (!rows) return rows.error();
+  std::vector<RunSummary> out;
+  for (const SqlRow& r : *rows)
+    out.push_back({sql_text(r[0]), sql_text(r[1]), sql_text(r[2]), sql_text(r[3]), sql_int(r[4]) != 0});
+  return out;
+}
+
+Result<std::optional<std::int64_t>> HistoryStore::recent_commit_time(const std::string& case_name, int back) {
+  Result<std::vector<SqlRow>> rows = db_->query(
+      "SELECT c.commit_time FROM sb_commits c WHERE EXISTS (SELECT 1 FROM sb_runs r WHERE r.commit_sha = c.sha "
+      "AND (? = '' OR r.case_name = ?)) ORDER BY c.commit_time DESC, c.sha DESC LIMIT 1 OFFSET ?",
+      {case_name, case_name, std::int64_t{back}});
+  if (!rows) return rows.error();
+  if (rows->empty()) return std::optional<std::int64_t>{};
+  return std::optional<std::int64_t>{sql_int(rows->front()[0])};
+}
+
+Status HistoryStore::acknowledge(const Acknowledgement& ack) {
+  WriteTransaction tx(*db_);
+  if (!tx.started()) return tx.started();
+  Result<std::vector<SqlRow>> done = db_->query(
+      "INSERT INTO sb_acknowledgements (series_id, commit_sha, note, created_at) VALUES (?, ?, ?, ?) "
+      "ON CONFLICT (series_id, commit_sha) DO UPDATE SET note = excluded.note",
+      {ack.series_id, ack.commit, ack.note, ack.created.empty() ? now_utc() : ack.created});
+  if (!done) return done.error();
+  return tx.commit();
+}
+
+Result<std::vector<Acknowledgement>> HistoryStore::acknowledgements(std::int64_t series) {
+  Result<std::vector<SqlRow>> rows = db_->query(
+      "SELECT a.series_id, a.commit_sha, a.note, a.created_at FROM sb_acknowledgements a "
+      "JOIN sb_commits c ON c.sha = a.commit_sha WHERE a.series_id = ? ORDER BY c.commit_time, c.sha",
+      {series});
+  if (!rows) return rows.error();
+  std::vector<Acknowledgement> out;
+  for (const SqlRow& r : *rows) out.push_back({sql_int(r[0]), sql_text(r[1]), sql_text(r[2]), sql_text(r[3])});
+  return out;
+}
+
+}  // namespace shatter

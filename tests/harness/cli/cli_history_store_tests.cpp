@@ -1,0 +1,158 @@
+// The history commands end to end on a git repository with commits at known times: record, show,
+// changes (with filters and --since), gate (Markdown and JUnit), ack and import.
+
+#include "tests/support/cli_runner.h"
+#include "tests/support/history_fixtures.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+using namespace shatter;
+using namespace shatter::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct History {
+  fs::path dir;
+  std::string db;
+  std::string repo;
+  std::vector<std::string> shas;
+};
+
+/// 14 commits; each commit's run is the synthetic grid at scale 1 with 1 % noise, from commit
+/// `step_at` on at scale `factor`.
+History recorded_history(const std::string& name, int step_at, double factor) {
+  History h;
+  h.dir = history_scratch(name);
+  h.db = (h.dir / "h.sqlite").string();
+  h.repo = (h.dir / "repo").string();
+  h.shas = make_commits(h.repo, 14);
+  for (std::size_t i = 0; i < h.shas.size(); ++i) {
+    const double scale = static_cast<int>(i) >= step_at ? factor : 1.0;
+    const auto file = write_text(h.dir / ("run" + std::to_string(i) + ".json"),
+                                 synthetic_grid_text(scale, 0.01, 100 + i, h.shas[i].substr(0, 12)));
+    const CliRun r = run_cli_argv({"history", "record", file.string(), "--db", h.db, "--repo", h.repo});
+    INFO(r.err);
+    REQUIRE(r.exit_code == 0);
+    REQUIRE(r.out.find("recorded run" + std::to_string(i) + ".json") == 0);
+  }
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("history changes and show name the commit where a series stepped", "[history][cli]") {
+  const History h = recorded_history("cli_changes", 8, 1.25);
+  const CliRun c = run_cli_argv({"history", "changes", "--db", h.db, "--what", "stage physics", "--metric", "cpu_ms"});
+  INFO(c.err);
+  REQUIRE(c.exit_code == 0);
+  CHECK(c.out.find("2 series, 2 with change points, 2 regression steps") == 0);
+  // Both cells stepped at the ninth commit, +25 %.
+  const std::string at = h.shas[8].substr(0, 12);
+  CHECK(c.out.find("| " + at + " | 8 |") != std::string::npos);
+  CHECK(c.out.find("+25.") != std::string::npos);
+  CHECK(c.out.find("**regression**") != std::string::npos);
+  // --since after the step: no step left in view.
+  const CliRun since = run_cli_argv({"history", "changes", "--db", h.db, "--what", "stage physics", "--metric", "cpu_ms",
+                                     "--since", h.shas[9].substr(0, 8)});
+  REQUIRE(since.exit_code == 0);
+  CHECK(since.out.find("2 series, 0 with change points") == 0);
+
+  const CliRun show = run_cli_argv({"history", "show", "--db", h.db, "--subject", "10 x 25", "--what", "stage physics",
+                                    "--metric", "cpu_ms", "--last", "10"});
+  INFO(show.err);
+  REQUIRE(show.exit_code == 0);
+  CHECK(show.out.find("### synthetic · 10 x 25 plane-slice/plane-slice/von-mises · stage physics · cpu_ms") == 0);
+  CHECK(show.out.find("▁") != std::string::npos);
+  CHECK(show.out.find("| " + at + " |") != std::string::npos);
+  CHECK(show.out.find("**regression +2") != std::string::npos);
+  CHECK(line_count(show.out) == 2 + 1 + 2 + 10 + 1);  // heading, sparkline, blank, table head, 10 commits, blank
+}
+
+TEST_CASE("history gate fails on a recent step, passes once it is acknowledged", "[history][cli]") {
+  const History h = recorded_history("cli_gate", 12, 1.15);  // the step landed two commits ago
+  const fs::path md = h.dir / "comment.md", junit = h.dir / "gate.xml";
+  const CliRun g = run_cli_argv({"history", "gate", "--commit", "HEAD", "--db", h.db, "--repo", h.repo, "--markdown",
+                                 md.string(), "--junit", junit.string()});
+  INFO(g.err);
+  CHECK(g.exit_code == 1);
+  CHECK(g.out.find("**shatterbench history gate: FAILED**") == 0);
+  CHECK(g.err.find("shatterbench: regression: synthetic · 10 x 25") != std::string::npos);
+  const std::string comment = slurp(md);
+  CHECK(comment.find("### Regressions") != std::string::npos);
+  CHECK(comment.find("<details>") != std::string::npos);
+  CHECK(comment.find("stepped at " + h.shas[12].substr(0, 12)) != std::string::npos);
+  const std::string xml = slurp(junit);
+  CHECK(xml.find("<failure") != std::string::npos);
+  CHECK(xml.find("type=\"regression\"") != std::string::npos);
+
+  const CliRun ack = run_cli_argv({"history", "ack", "--commit", h.shas[12], "--db", h.db, "--case", "synthetic",
+                                   "--note", "new physics settings"});
+  INFO(ack.err);
+  REQUIRE(ack.exit_code == 0);
+  const CliRun again = run_cli_argv({"history", "gate", "--commit", "HEAD", "--db", h.db, "--repo", h.repo});
+  INFO(again.err);
+  CHECK(again.exit_code == 0);
+  CHECK(again.out.find("**shatterbench history gate: passed**") == 0);
+}
+
+TEST_CASE("history gate passes a quiet history and fails a run over its budget", "[history][cli]") {
+  const History h = recorded_history("cli_gate_quiet", 99, 1.0);
+  const CliRun quiet = run_cli_argv({"history", "gate", "--commit", h.shas.back().substr(0, 10), "--db", h.db});
+  INFO(quiet.err);
+  CHECK(quiet.exit_code == 0);
+  CHECK(quiet.out.find("0 regressed and 0 failed run(s)") != std::string::npos);
+  // One more commit whose run broke a 2 ms budget (the worst frame is 3 ms): a failed run.
+  const std::string sha = git_in(h.repo, {"-c", "user.name=t", "-c", "user.email=t@example.org", "commit", "-q",
+                                          "--allow-empty", "-m", "over budget"});
+  const std::string head = git_in(h.repo, {"rev-parse", "HEAD"});
+  const auto file = write_text(h.dir / "over.json", synthetic_grid_text(1.0, 0.01, 7, head.substr(0, 12), 2, 5, 2.0));
+  REQUIRE(run_cli_argv({"history", "record", file.string(), "--db", h.db, "--repo", h.repo}).exit_code == 0);
+  const CliRun over = run_cli_argv({"history", "gate", "--commit", "HEAD", "--db", h.db, "--repo", h.repo});
+  CHECK(over.exit_code == 1);
+  CHECK(over.err.find("run over.json (grid synthetic) failed its own checks") != std::string::npos);
+}
+
+TEST_CASE("history commands refuse bad input with one line", "[history][cli]") {
+  const History h = recorded_history("cli_history_bad", 99, 1.0);
+  const std::vector<std::vector<std::string>> bad = {
+      {"history", "gate", "--commit", "deadbeefdead", "--db", h.db, "--repo", h.repo},
+      {"history", "gate", "--commit", "HEAD", "--db", (h.dir / "missing.sqlite").string(), "--repo", h.repo},
+      {"history", "gate", "--commit", "HEAD", "--db", h.db, "--repo", h.repo, "--alpha", "2"},
+      {"history", "ack", "--commit", "HEAD", "--db", h.db, "--repo", h.repo, "--note", "x"},
+      {"history", "changes", "--db", h.db, "--since", "--not-a-revision", "--repo", h.repo},
+      {"history", "show", "--db", "postgresql://127.0.0.1:1/nothing"},
+  };
+  for (const auto& args : bad) {
+    const CliRun r = run_cli_argv(args);
+    INFO(args[1] << " " << r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(line_count(r.err) == 1);
+  }
+  CHECK_FALSE(fs::exists(h.dir / "missing.sqlite"));
+}
+
+TEST_CASE("history import takes a folder of artifacts, passing over other JSON", "[history][cli]") {
+  const fs::path dir = history_scratch("cli_import");
+  const std::string repo = (dir / "repo").string();
+  const std::vector<std::string> shas = make_commits(repo, 2);
+  fs::create_directories(dir / "artifacts" / "shard-1");
+  write_text(dir / "artifacts" / "a.json", synthetic_grid_text(1.0, 0.01, 1, shas[0].substr(0, 12)));
+  write_text(dir / "artifacts" / "shard-1" / "b.json", synthetic_grid_text(1.0, 0.01, 2, shas[1].substr(0, 12)));
+  write_text(dir / "artifacts" / "gbench.json", R"({"context": {}, "benchmarks": []})");
+  write_text(dir / "artifacts" / "notes.txt", "not json");
+  const std::string db = (dir / "h.sqlite").string();
+  const CliRun r = run_cli_argv({"history", "import", (dir / "artifacts").string(), "--db", db, "--repo", repo});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("recorded a.json") != std::string::npos);
+  CHECK(r.out.find("recorded b.json") != std::string::npos);
+  CHECK(r.err.find("passed over 1 JSON file(s)") != std::string::npos);
+  const CliRun again = run_cli_argv({"history", "import", (dir / "artifacts").string(), "--db", db, "--repo", repo});
+  CHECK(again.exit_code == 0);
+  CHECK(again.out.find("already recorded a.json") != std::string::npos);
+}
