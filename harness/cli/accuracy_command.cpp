@@ -10,6 +10,7 @@
 #include "harness/cases/case_library.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cli/command.h"
+#include "harness/cli/history_access.h"
 #include "harness/cli/progress_line.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
@@ -33,6 +34,7 @@ namespace {
 struct AccuracyOptions {
   std::vector<std::string> cases = {"elephant", "wall", "cantilever", "column", "fixed-beam"};
   std::string json;
+  RecordFlags record;  // --record, --db
   int repetitions = 3;
   std::vector<std::string> families = {"fracture", "stress", "colliders", "cascade"};
   std::vector<std::string> fracturers;
@@ -88,6 +90,7 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   }
   const std::filesystem::path json_path = o.json;
   if (Status s = check_outputs({{"--json", json_path}}); !s) return fail_input(s.error().message);
+  if (Status s = check_record_target(o.record); !s) return fail_input(s.error().message);
 
   const auto start = std::chrono::steady_clock::now();
   FractureAccuracyOptions fo;
@@ -165,25 +168,33 @@ int run_accuracy(const AccuracyOptions& o, const Registries& registries) {
   mark_pareto_front(points);
   const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  std::cout << accuracy_to_markdown(points) << std::flush;
-  if (!json_path.empty()) {
-    const std::string json = accuracy_to_json(points, names, o.repetitions, wall_s, current_context()).dump(1) + "\n";
-    if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
-  }
   // Every point is printed; one whose fracture fails its own checks makes the run fail, and so does a
   // stress point of the default solver whose solve did not converge (or failed). The solver sweeps (CG
   // with loose tolerances or capped iterations) are expected to stop short: their points are marked
   // failed in the table and the JSON only.
-  int failed_checks = 0;
+  std::vector<std::pair<std::string, std::vector<std::string>>> failed;
   for (const AccuracyPoint& p : points) {
     const std::string subject = p.case_name + " " + p.algorithm + " " + p.knob;
     if (p.figures.contains("failed_checks"))
-      failed_checks += print_failed_checks(subject, p.figures["failed_checks"].get<std::vector<std::string>>());
+      failed.emplace_back(subject, p.figures["failed_checks"].get<std::vector<std::string>>());
     if (p.family == "stress" && p.figures.contains("failed") && p.knobs.value("solver", "default") == "default")
-      failed_checks += print_failed_checks(subject, {p.figures["failed"].get<std::string>()});
+      failed.emplace_back(subject, std::vector<std::string>{p.figures["failed"].get<std::string>()});
     if (p.family == "cascade" && p.figures.contains("failed"))
-      failed_checks += print_failed_checks(subject, {p.figures["failed"].get<std::string>()});
+      failed.emplace_back(subject, std::vector<std::string>{p.figures["failed"].get<std::string>()});
   }
+  std::cout << accuracy_to_markdown(points) << std::flush;
+  if (!json_path.empty() || o.record.record) {
+    nlohmann::ordered_json j = accuracy_to_json(points, names, o.repetitions, wall_s, current_context());
+    j["passed"] = failed.empty();
+    const std::string json = j.dump(1) + "\n";
+    if (!json_path.empty())
+      if (Status s = write_file_atomically(json_path, json); !s) return fail_input("--json: " + s.error().message);
+    if (const int code = record_if_asked(o.record, json, json_path.empty() ? "accuracy.json" : json_path.string());
+        code != exit_ok)
+      return code;
+  }
+  int failed_checks = 0;
+  for (const auto& [subject, messages] : failed) failed_checks += print_failed_checks(subject, messages);
   return failed_checks > 0 ? exit_gate_failed : exit_ok;
 }
 
@@ -195,6 +206,7 @@ void add_accuracy_command(CLI::App& app, int& exit_code, const Registries& regis
       "accuracy", "Time every fracturer and stress model over its knobs against its error; mark the Pareto front");
   cmd->add_option("--case", o->cases, "Case files or built-in names (default: elephant wall cantilever column fixed-beam)");
   cmd->add_option("--json", o->json, "Write the accuracy results JSON here (docs/results.md)");
+  add_record_flags(cmd, o->record);
   cmd->add_flag("--no-repair", o->no_repair, "Refuse a mesh file that is not a solid instead of repairing it");
   add_cap_uv_scale_option(cmd, o->cap_uv_scale);
   cmd->add_option("--repetitions", o->repetitions,

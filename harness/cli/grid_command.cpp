@@ -1,6 +1,7 @@
 #include "harness/cases/case_library.h"
 #include "harness/cases/case_mesh.h"
 #include "harness/cli/command.h"
+#include "harness/cli/history_access.h"
 #include "harness/results/cell_checks.h"
 #include "harness/grid/grid_runner.h"
 #include "harness/output/atomic_file.h"
@@ -44,6 +45,7 @@ struct GridCommandOptions {
   int repetitions = 3;
   std::optional<int> frames;
   std::string json;
+  RecordFlags record;  // --record, --db
   std::vector<int> prefracture;
   std::vector<int> runtime;
   bool no_skip = false;
@@ -224,6 +226,7 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
     options.cell_timeout_s = *o.timeout_s;
   }
   if (Status s = check_grid_options(*c, options, registries); !s) return fail_algorithm("", s.error());
+  if (Status s = check_record_target(o.record); !s) return fail_input(s.error().message);
 
   std::filesystem::path json_path = o.json;
   if (o.update_baseline) {
@@ -309,6 +312,13 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   if (!o.junit.empty())
     if (Status s = write_file_atomically(o.junit, make_grid_reporter("junit")->render(report)); !s)
       return fail_input("--junit: " + s.error().message);
+  // The run is recorded whatever its verdict: a broken budget is part of the history.
+  if (o.record.record) {
+    const std::string json = make_grid_reporter("json")->render(report);
+    if (const int code = record_if_asked(o.record, json, json_path.empty() ? prepared->spec.name + ".json" : json_path.string());
+        code != exit_ok)
+      return code;
+  }
   if (!gate_failed) return exit_ok;
   for (const GridCell& cell : grid->cells)
     print_failed_checks(fmt::format("cell {} x {}", cell.prefracture, cell.runtime), failed_cell_checks(cell));
@@ -345,6 +355,7 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
       ->check(CLI::Range(1, std::numeric_limits<int>::max()));  // kMaxRepetitions: check_grid_limits
   cmd->add_option("--frames", o->frames, "Frames per run (default: the case's frames)");
   cmd->add_option("--json", o->json, "Write the results JSON here (and the CSV beside it, .csv)");
+  add_record_flags(cmd, o->record);
   cmd->add_option("--format", o->format, "Format of the --json file: shatter (default) or gbench (Google Benchmark's)");
   cmd->add_option("--gbench", o->gbench,
                   "Also write Google Benchmark's JSON here (for its tools/compare.py; docs/results.md), beside --json");

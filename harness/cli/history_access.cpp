@@ -3,6 +3,7 @@
 #include "harness/cli/command.h"
 #include "harness/history/git_commit.h"
 #include "harness/history/results_run.h"
+#include "harness/results/run_context.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -64,6 +65,33 @@ int record_results(const std::vector<ResultsText>& results, const StoreFlags& st
                              db->name());
   }
   return exit_ok;
+}
+
+void add_record_flags(CLI::App* cmd, RecordFlags& flags) {
+  cmd->add_flag("--record", flags.record,
+                "Record the run in the history store at this build's commit (docs/history.md; shatterbench history)");
+  cmd->add_option("--db", flags.store.db,
+                  "With --record: the history store, an SQLite file or a postgresql:// URL (default: SHATTERBENCH_DB, "
+                  "else results/history.sqlite)");
+}
+
+Status check_record_target(const RecordFlags& flags) {
+  if (!flags.record) {
+    if (!flags.store.db.empty()) return Error{"--db: only with --record"};
+    return {};
+  }
+  const std::string commit = current_context().commit;
+  if (commit.empty()) return Error{"--record: this shatterbench was built outside a git checkout: record with history record --commit"};
+  Result<CommitInfo> info = resolve_commit(".", commit);
+  if (!info) return Error{"--record: " + info.error().message};
+  Result<HistoryStore> store = open_store(flags.store, true);
+  if (!store) return Error{"--record: " + store.error().message};
+  return {};
+}
+
+int record_if_asked(const RecordFlags& flags, const std::string& text, const std::string& source) {
+  if (!flags.record) return exit_ok;
+  return record_results({{text, source}}, flags.store, CommitFlags{});
 }
 
 Result<CommitInfo> recorded_commit(HistoryStore& store, const std::string& revision, const std::string& repo) {

@@ -48,6 +48,23 @@ struct ResultsText {
 /// line on stderr.
 int record_results(const std::vector<ResultsText>& results, const StoreFlags& store, const CommitFlags& commit);
 
+/// `--record` of grid, accuracy and table: the run goes into the store at the commit the binary was
+/// built from (its context.commit, which git in the working folder must know).
+struct RecordFlags {
+  bool record = false;
+  StoreFlags store;
+};
+
+/// Adds --record and --db to `cmd`.
+void add_record_flags(CLI::App* cmd, RecordFlags& flags);
+
+/// Before a run: with --record, the store opens and git knows this binary's commit, so that a run of
+/// an hour does not end in an error it could have given at once.
+Status check_record_target(const RecordFlags& flags);
+
+/// After a run: records `text` (the run's results JSON) when --record is given; an exit code.
+int record_if_asked(const RecordFlags& flags, const std::string& text, const std::string& source);
+
 /// The commit `revision` names: a sha prefix recorded in `store`, else what git at `repo` says (and
 /// is then required to be recorded). Error names the revision.
 Result<CommitInfo> recorded_commit(HistoryStore& store, const std::string& revision, const std::string& repo);

@@ -4,11 +4,16 @@
 #include "algorithms/registry/registries.h"
 #include "harness/cases/load_solid.h"
 #include "harness/cli/command.h"
+#include "harness/cli/history_access.h"
+#include "harness/output/atomic_file.h"
+#include "harness/output/output_targets.h"
+#include "harness/results/run_context.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
 #include "harness/results/markdown_text.h"
 
 #include <fmt/core.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -30,6 +35,8 @@ struct TableOptions {
   int repetitions = 3;
   bool no_repair = false;
   double cap_uv_scale = 0.0;  // 0: the default
+  std::string json;           // --json: the table results JSON (docs/results.md)
+  RecordFlags record;         // --record, --db
 };
 
 double median(std::vector<double> v) {
@@ -39,6 +46,8 @@ double median(std::vector<double> v) {
 }
 
 int run_table(TableOptions o, const Registries& r) {
+  if (Status s = check_outputs({{"--json", o.json}}); !s) return fail_input(s.error().message);
+  if (Status s = check_record_target(o.record); !s) return fail_input(s.error().message);
   if (o.algorithms.empty()) o.algorithms = r.fracturers.names();
   // A fracturer whose code failed to make it (a plugin's factory threw or gave a null) is a failed row
   // of its own; an unknown name or bad settings are the command line's error.
@@ -62,6 +71,7 @@ int run_table(TableOptions o, const Registries& r) {
   }
 
   std::vector<std::string> failed;  // checks failed by rows, named by mesh, fracturer and count
+  nlohmann::ordered_json json_rows = nlohmann::ordered_json::array();
   SelfIntersectionVerdicts verdicts;  // each mesh's input check runs once for every row and repetition
   fmt::print("| mesh | triangles | fracturer | requested | fragments | median ms | x fastest | volume error "
              "| partition error | area error | closed | min volume |\n");
@@ -75,6 +85,7 @@ int run_table(TableOptions o, const Registries& r) {
         std::string refused;  // a fracturer's refusal of this input (e.g. self-intersecting): shown, not fatal
         bool fault = false;   // the refusal is a fault of its code (ErrorCause::algorithm_fault): the run fails
         double ms;
+        std::vector<double> samples_ms;
         std::size_t count;
         FractureMetrics metrics;
         FractureAcceptance acceptance;  // the fracturer's (acceptance_for)
@@ -82,7 +93,7 @@ int run_table(TableOptions o, const Registries& r) {
       std::vector<Row> rows;
       for (const Candidate& candidate : fracturers) {
         if (!candidate.fracturer) {
-          rows.push_back({candidate.name, candidate.error.message, true, 0.0, 0, {}, {}});
+          rows.push_back({candidate.name, candidate.error.message, true, 0.0, {}, 0, {}, {}});
           continue;
         }
         const Fracturer* fracturer = candidate.fracturer.get();
@@ -107,10 +118,10 @@ int run_table(TableOptions o, const Registries& r) {
           if (rep == 0) first = std::move(*fragments);
         }
         if (!refused.empty()) {
-          rows.push_back({candidate.name, refused, fault, 0.0, 0, {}, {}});
+          rows.push_back({candidate.name, refused, fault, 0.0, {}, 0, {}, {}});
           continue;
         }
-        rows.push_back({candidate.name, {}, false, median(times), first.size(),
+        rows.push_back({candidate.name, {}, false, median(times), times, first.size(),
                         fracture_metrics(solid.mesh, solid.mass, first, n), acceptance_for(*fracturer)});
       }
       double fastest = std::numeric_limits<double>::infinity();
@@ -120,6 +131,23 @@ int run_table(TableOptions o, const Registries& r) {
         if (row.refused.empty())
           for (const std::string& check : failed_fracture_checks(row.metrics, row.acceptance))
             failed.push_back(fmt::format("{} {} {} fragments: {}", mesh_name, row.algorithm, n, check));
+      for (const Row& row : rows) {
+        nlohmann::ordered_json j = {{"mesh", mesh_name}, {"triangles", solid.mesh.triangle_count()},
+                                    {"algorithm", row.algorithm}, {"fragments", n}};
+        if (!row.refused.empty()) {
+          j[row.fault ? "failed" : "refused"] = row.refused;
+        } else {
+          j["produced"] = row.count;
+          j["time_ms"] = row.ms;
+          j["samples_ms"] = row.samples_ms;
+          j["figures"] = {{"volume_error", row.metrics.volume_error},
+                          {"partition_error", row.metrics.partition_error},
+                          {"area_error", row.metrics.area_error},
+                          {"all_closed", row.metrics.all_closed},
+                          {"min_fragment_volume", row.metrics.min_fragment_volume}};
+        }
+        json_rows.push_back(std::move(j));
+      }
       for (const Row& row : rows)
         if (row.fault) failed.push_back(fmt::format("{} {} {} fragments: {}", mesh_name, row.algorithm, n, row.refused));
       for (const Row& row : rows)
@@ -136,6 +164,21 @@ int run_table(TableOptions o, const Registries& r) {
   fmt::print("\nmedian of {} repetitions (seeds 1..{}); error figures of seed 1; x fastest = median / fastest "
              "median in the same row group\n",
              o.repetitions, o.repetitions);
+  if (!o.json.empty() || o.record.record) {
+    nlohmann::ordered_json j;
+    j["schema_version"] = 1;
+    j["kind"] = "table";
+    j["context"] = to_json(current_context());
+    j["repetitions"] = o.repetitions;
+    j["meshes"] = o.meshes;
+    j["passed"] = failed.empty();
+    j["rows"] = std::move(json_rows);
+    const std::string text = j.dump(1) + "\n";
+    if (!o.json.empty())
+      if (Status s = write_file_atomically(o.json, text); !s) return fail_input("--json: " + s.error().message);
+    if (const int code = record_if_asked(o.record, text, o.json.empty() ? "table.json" : o.json); code != exit_ok)
+      return code;
+  }
   // The table is printed whole; a row whose figures fail the checks makes the run fail.
   return print_failed_checks("", failed) > 0 ? exit_gate_failed : exit_ok;
 }
@@ -157,6 +200,8 @@ void add_table_command(CLI::App& app, int& exit_code, const Registries& registri
   cmd->add_option("--repetitions", options->repetitions, "Runs per cell, seeds 1..R; the median time is shown")
       ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
+  cmd->add_option("--json", options->json, "Write the table results JSON here (docs/results.md)");
+  add_record_flags(cmd, options->record);
   cmd->callback([options, &exit_code, &registries] { exit_code = run_table(*options, registries); });
 }
 

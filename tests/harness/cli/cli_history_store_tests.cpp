@@ -5,6 +5,7 @@
 #include "tests/support/history_fixtures.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <string>
@@ -155,4 +156,39 @@ TEST_CASE("history import takes a folder of artifacts, passing over other JSON",
   const CliRun again = run_cli_argv({"history", "import", (dir / "artifacts").string(), "--db", db, "--repo", repo});
   CHECK(again.exit_code == 0);
   CHECK(again.out.find("already recorded a.json") != std::string::npos);
+}
+
+TEST_CASE("grid, accuracy and table --record put their runs in the store at the build's commit", "[history][cli]") {
+  const fs::path dir = history_scratch("cli_record_flags");
+  const std::string db = (dir / "h.sqlite").string();
+  const fs::path source = SHATTER_SOURCE_DIR;  // the checkout whose git knows the build's commit
+  const CliRun grid = run_cli_argv({"grid", "--case", "building", "--prefracture", "10", "--runtime", "5", "--repetitions",
+                                    "2", "--frames", "20", "--record", "--db", db}, source);
+  INFO(grid.err);
+  REQUIRE(grid.exit_code == 0);
+  CHECK(grid.out.find("recorded building.json (grid building") != std::string::npos);
+  const CliRun table = run_cli_argv({"table", "--mesh", "data/meshes/sphere.off", "--algo", "plane-slice", "--fragments", "5",
+                                     "--repetitions", "2", "--json", (dir / "t.json").string(), "--record", "--db", db}, source);
+  INFO(table.err);
+  REQUIRE(table.exit_code == 0);
+  CHECK(table.out.find("recorded t.json (table") != std::string::npos);
+  const CliRun accuracy = run_cli_argv({"accuracy", "--case", "cantilever", "--family", "stress", "--model", "von-mises",
+                                        "--repetitions", "1", "--record", "--db", db}, source);
+  INFO(accuracy.err);
+  REQUIRE(accuracy.exit_code == 0);
+  CHECK(accuracy.out.find("recorded accuracy.json (accuracy") != std::string::npos);
+
+  const CliRun show = run_cli_argv({"history", "show", "--db", db, "--metric", "time_ms", "--last", "1"});
+  REQUIRE(show.exit_code == 0);
+  CHECK(show.out.find("### building · 10 x 5 ") != std::string::npos);
+  CHECK(show.out.find("### sphere.off · plane-slice 5 fragments · fracture · time_ms") != std::string::npos);
+  CHECK(show.out.find("### cantilever · von-mises ") != std::string::npos);
+  // The table JSON carries every repetition's time.
+  const nlohmann::json t = nlohmann::json::parse(slurp(dir / "t.json"));
+  CHECK(t["kind"] == "table");
+  CHECK(t["rows"][0]["samples_ms"].size() == 2);
+
+  const CliRun stray = run_cli_argv({"table", "--mesh", "data/meshes/sphere.off", "--db", db}, source);
+  CHECK(stray.exit_code == 2);
+  CHECK(stray.err.find("--db: only with --record") != std::string::npos);
 }
