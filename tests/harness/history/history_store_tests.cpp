@@ -5,6 +5,8 @@
 
 #include <sqlite3.h>
 
+#include <chrono>
+
 using namespace shatter;
 using namespace shatter::test;
 
@@ -92,4 +94,17 @@ TEST_CASE("samples blobs hold doubles exactly and refuse what is not finite", "[
   CHECK_FALSE(samples_from_blob(std::string(7, '\0')));
   const double nan = std::numeric_limits<double>::quiet_NaN();
   CHECK_FALSE(samples_from_blob(samples_blob({1.0, nan})));
+}
+
+TEST_CASE("an unreachable server is one line, exit 2, within the 5 s connect timeout", "[history][store]") {
+  const auto start = std::chrono::steady_clock::now();
+  // A closed port on this machine, and an address that never answers (routed nowhere, or dropped).
+  for (const std::string url : {"postgresql://shatter@127.0.0.1:1/history", "postgresql://shatter@10.255.255.1:5432/history"}) {
+    const CliRun r = run_cli_argv({"history", "show", "--db", url});
+    INFO(r.err);
+    CHECK(r.exit_code == 2);
+    CHECK(line_count(r.err) == 1);
+    CHECK(r.err.find("cannot connect") != std::string::npos);
+  }
+  CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(12));
 }

@@ -157,7 +157,8 @@ inline void check_killed_recorder(const std::string& location, const std::filesy
   REQUIRE(whole);
   const auto big = write_text(dir / "big.json", synthetic_grid_text(1.0, 0.02, 3, shas[0].substr(0, 12), 600));
   int landed = 0, cut = 0;
-  for (int delay_ms = 0; delay_ms <= 600 && landed == 0; delay_ms += 15) {
+  // Kills every 15 ms into the run at first, then later and later until one recorder finishes.
+  for (int delay_ms = 0; delay_ms <= 20000 && landed == 0; delay_ms += delay_ms < 300 ? 15 : delay_ms / 2) {
     const pid_t pid = spawn_cli({"history", "record", big.string(), "--db", location, "--repo", (dir / "repo").string()}, {},
                                 dir / "out", dir / "err");
     REQUIRE(pid > 0);
