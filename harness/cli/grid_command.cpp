@@ -42,7 +42,7 @@ struct GridCommandOptions {
   std::string fracturer;
   std::string stress;
   std::optional<double> budget_ms;
-  int repetitions = 3;
+  int repetitions = 5;
   std::optional<int> frames;
   std::string json;
   RecordFlags record;  // --record, --db
@@ -351,7 +351,7 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
   cmd->add_option("--fracturer", o->fracturer, "Pre-fracture and runtime fracturer (default: the case's)");
   cmd->add_option("--stress", o->stress, "Stress model (default: the case's stress.model)");
   cmd->add_option("--budget-ms", o->budget_ms, "Frame budget in ms (default: the case's budget_ms, 33.3)");
-  cmd->add_option("--repetitions", o->repetitions, "Runs per cell, each with its own seed (default 3)")
+  cmd->add_option("--repetitions", o->repetitions, "Runs per cell, each with its own seed (default 5: the fewest whose U test can show a change between two runs)")
       ->check(CLI::Range(1, std::numeric_limits<int>::max()));  // kMaxRepetitions: check_grid_limits
   cmd->add_option("--frames", o->frames, "Frames per run (default: the case's frames)");
   cmd->add_option("--json", o->json, "Write the results JSON here (and the CSV beside it, .csv)");

@@ -32,7 +32,8 @@ void add_commit_flags(CLI::App* cmd, CommitFlags& flags) {
   cmd->add_option("--branch", flags.branch, "The branch (default: git's, or the CI's branch variable)");
 }
 
-int record_results(const std::vector<ResultsText>& results, const StoreFlags& store, const CommitFlags& commit) {
+int record_results(const std::vector<ResultsText>& results, const StoreFlags& store, const CommitFlags& commit,
+                   std::ostream& report) {
   // Everything that can be wrong with the input is found before the store is touched.
   std::vector<RunRecord> runs;
   std::map<std::string, CommitInfo> commits;
@@ -60,7 +61,7 @@ int record_results(const std::vector<ResultsText>& results, const StoreFlags& st
   for (const RunRecord& run : runs) {
     Result<bool> added = db->record(run);
     if (!added) return fail_input(added.error().message);
-    std::cout << fmt::format("{} {} ({} {}, {} series) at {} into {}\n", *added ? "recorded" : "already recorded",
+    report << fmt::format("{} {} ({} {}, {} series) at {} into {}\n", *added ? "recorded" : "already recorded",
                              run.source, run.kind, run.case_name, run.measurements.size(), run.commit.sha.substr(0, 12),
                              db->name());
   }
@@ -91,7 +92,7 @@ Status check_record_target(const RecordFlags& flags) {
 
 int record_if_asked(const RecordFlags& flags, const std::string& text, const std::string& source) {
   if (!flags.record) return exit_ok;
-  return record_results({{text, source}}, flags.store, CommitFlags{});
+  return record_results({{text, source}}, flags.store, CommitFlags{}, std::cerr);
 }
 
 Result<CommitInfo> recorded_commit(HistoryStore& store, const std::string& revision, const std::string& repo) {

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -43,10 +44,11 @@ struct ResultsText {
 };
 
 /// Records each of `results` at its commit into the store of `store`, printing one line per run on
-/// stdout ("recorded ..." or "already recorded ..."). Every file is read and its commit resolved
+/// `report` ("recorded ..." or "already recorded ..."). Every file is read and its commit resolved
 /// before anything is written, so a bad file leaves the store unchanged. Exit code: 0, or 2 with one
 /// line on stderr.
-int record_results(const std::vector<ResultsText>& results, const StoreFlags& store, const CommitFlags& commit);
+int record_results(const std::vector<ResultsText>& results, const StoreFlags& store, const CommitFlags& commit,
+                   std::ostream& report);
 
 /// `--record` of grid, accuracy and table: the run goes into the store at the commit the binary was
 /// built from (its context.commit, which git in the working folder must know).
@@ -62,7 +64,8 @@ void add_record_flags(CLI::App* cmd, RecordFlags& flags);
 /// an hour does not end in an error it could have given at once.
 Status check_record_target(const RecordFlags& flags);
 
-/// After a run: records `text` (the run's results JSON) when --record is given; an exit code.
+/// After a run: records `text` (the run's results JSON) when --record is given, its line on stderr
+/// (stdout is the command's table); an exit code.
 int record_if_asked(const RecordFlags& flags, const std::string& text, const std::string& source);
 
 /// The commit `revision` names: a sha prefix recorded in `store`, else what git at `repo` says (and

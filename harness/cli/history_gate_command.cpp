@@ -2,6 +2,7 @@
 #include "harness/cli/history_access.h"
 #include "harness/cli/history_subcommands.h"
 #include "harness/compare/grid_compare.h"
+#include "harness/history/calibration_scaling.h"
 #include "harness/history/history_gate.h"
 #include "harness/output/atomic_file.h"
 #include "harness/output/output_targets.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -26,6 +28,7 @@ struct GateOptions {
   std::string repo;
   std::string markdown;
   std::string junit;
+  std::string baseline_branch;
   HistoryGateSettings settings;
 };
 
@@ -90,15 +93,35 @@ int run_gate(const GateOptions& o) {
 
   auto all = store->filtered_series_runs(o.filter);
   if (!all) return fail_input(all.error().message);
+  // Each grid cell's calibration samples, for its CPU times (calibration_scaling.h).
+  SeriesFilter calibration_filter = o.filter;
+  calibration_filter.kind = "grid";
+  calibration_filter.what = "calibration";
+  calibration_filter.metric = "cpu_ms";
+  auto calibrations = store->filtered_series_runs(calibration_filter);
+  if (!calibrations) return fail_input(calibrations.error().message);
+  std::map<std::string, RunCalibrations> calibration_of;  // by case, fingerprint and subject
+  auto cell_key = [](const SeriesKey& k) { return k.case_name + '\x1f' + k.fingerprint + '\x1f' + k.subject; };
+  for (const auto& [info, calibration_runs] : *calibrations)
+    for (const SeriesRun& run : calibration_runs) calibration_of[cell_key(info.key)][run.run_id] = run.samples;
   std::vector<GateRow> rows;
-  for (const auto& [info, series_runs] : *all) {
+  for (auto& [info, series_runs] : *all) {
     if (info.key.better == Better::none) continue;
-    // The wall clock of a grid is judged through its CPU time unless asked for by name.
-    if (o.filter.metric.empty() && info.key.kind == "grid" && info.key.metric == "time_ms") continue;
+    // A grid's wall-clock times (stages, frames, figures in ms) are judged through their CPU times,
+    // calibrated, unless asked for by name: a shared machine moves them by more than a gate can bear.
+    if (o.filter.metric.empty() && info.key.kind == "grid" && info.key.unit == "ms" && info.key.metric != "cpu_ms")
+      continue;
+    bool normalized = false;
+    if (info.key.kind == "grid" && info.key.metric == "cpu_ms" && info.key.what != "calibration")
+      if (const auto c = calibration_of.find(cell_key(info.key)); c != calibration_of.end())
+        normalized = normalize_by_calibration(series_runs, c->second);
     std::vector<CommitPoint> points = commit_points(series_runs);
     const auto at = std::find_if(points.begin(), points.end(), [&](const CommitPoint& p) { return p.commit == commit->sha; });
     if (at == points.end()) continue;  // the gated commit did not measure this series
     points.erase(at + 1, points.end());
+    // A pull request is judged against its target's history: other branches' commits are left out.
+    if (!o.baseline_branch.empty())
+      std::erase_if(points, [&](const CommitPoint& p) { return p.commit != commit->sha && p.branch != o.baseline_branch; });
     Result<std::vector<Acknowledgement>> acks = store->acknowledgements(info.id);
     if (!acks) return fail_input(acks.error().message);
     std::size_t first = 0;
@@ -106,6 +129,7 @@ int run_gate(const GateOptions& o) {
       for (std::size_t i = 0; i < points.size(); ++i)
         if (points[i].commit == a.commit) first = std::max(first, i);
     rows.push_back(GateRow{info, judge_newest(points, first, info.key.better, info.key.unit, o.settings)});
+    if (normalized) rows.back().verdict.note = "per calibration" + (rows.back().verdict.note.empty() ? "" : "; " + rows.back().verdict.note);
   }
   if (rows.empty() && failed_runs.empty())
     return fail_input(fmt::format("--commit {}: no series of the filter measured at {} in {}", o.commit,
@@ -116,11 +140,13 @@ int run_gate(const GateOptions& o) {
   });
   const auto regressed = static_cast<std::size_t>(std::count_if(
       rows.begin(), rows.end(), [](const GateRow& r) { return r.verdict.verdict == GateVerdict::regressed; }));
+  const auto improved = static_cast<std::size_t>(std::count_if(
+      rows.begin(), rows.end(), [](const GateRow& r) { return r.verdict.verdict == GateVerdict::improved; }));
   const bool failed = regressed > 0 || !failed_runs.empty();
   const std::string headline = fmt::format(
-      "**shatterbench history gate: {}** at {}: {} regressed and {} failed run(s) in {} series (threshold {:g} %, "
-      "alpha {:g}, recent {}; {})",
-      failed ? "FAILED" : "passed", commit->sha.substr(0, 12), regressed, failed_runs.size(), rows.size(),
+      "**shatterbench history gate: {}** at {}: {} regressed, {} improved and {} failed run(s) in {} series "
+      "(threshold {:g} %, alpha {:g}, recent {}; {})",
+      failed ? "FAILED" : "passed", commit->sha.substr(0, 12), regressed, improved, failed_runs.size(), rows.size(),
       100.0 * o.settings.threshold, o.settings.alpha, o.settings.recent, store->name());
   std::cout << gate_markdown(headline, failed_runs, rows, false, std::string::npos / 2) << std::flush;
   if (!o.markdown.empty())
@@ -189,6 +215,8 @@ void add_history_gate_commands(CLI::App& history, int& exit_code) {
   add_store_flags(gate, o->store);
   add_series_filter_flags(gate, o->filter);
   gate->add_option("--repo", o->repo, "The git repository that resolves --commit (default: the working folder)");
+  gate->add_option("--baseline-branch", o->baseline_branch,
+                   "Judge against the commits of this branch only (e.g. main; default: every recorded commit)");
   gate->add_option("--markdown", o->markdown, "Write the pull-request comment here (at most 65,000 characters)");
   gate->add_option("--junit", o->junit, "Write JUnit XML here: one test case per series");
   HistoryGateSettings& s = o->settings;
@@ -198,6 +226,8 @@ void add_history_gate_commands(CLI::App& history, int& exit_code) {
       ->capture_default_str();
   gate->add_option("--baseline-commits", s.baseline_commits, "Most commits in the baseline")->capture_default_str();
   gate->add_option("--min-change-ms", s.min_change_ms, "Series in ms: smaller absolute changes never regress")->capture_default_str();
+  gate->add_option("--test", s.test, "samples (U test on every sample), medians (prediction test on the commit medians) or robust (the same, median and MAD)")
+      ->capture_default_str();
   gate->add_option("--window", s.change_points.window, "Change points: points per window")->capture_default_str();
   gate->add_option("--max-pvalue", s.change_points.max_pvalue, "Change points: largest p-value")->capture_default_str();
   gate->callback([o, &exit_code] { exit_code = run_gate(*o); });

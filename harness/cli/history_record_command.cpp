@@ -38,7 +38,7 @@ int run_record(const RecordOptions& o) {
   std::vector<fs::path> files(o.files.begin(), o.files.end());
   Result<std::vector<ResultsText>> texts = read_all(files);
   if (!texts) return fail_input(texts.error().message);
-  return record_results(*texts, o.store, o.commit);
+  return record_results(*texts, o.store, o.commit, std::cout);
 }
 
 /// True when `text` is a shatterbench results file (the keys that say so), read cheaply.
@@ -76,7 +76,7 @@ int run_import(const RecordOptions& o) {
   }
   if (skipped > 0) std::cerr << fmt::format("shatterbench: import: passed over {} JSON file(s) that are not results\n", skipped);
   if (texts->empty()) return fail_input("import: no results file found");
-  return record_results(*texts, o.store, o.commit);
+  return record_results(*texts, o.store, o.commit, std::cout);
 }
 
 }  // namespace

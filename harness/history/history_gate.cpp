@@ -3,6 +3,7 @@
 #include "harness/compare/mann_whitney.h"
 #include "harness/results/sample_statistics.h"
 
+#include <boost/math/distributions/students_t.hpp>
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -16,6 +17,8 @@ Status check_history_gate_settings(const HistoryGateSettings& s) {
   if (!(s.alpha > 0.0 && s.alpha < 1.0)) return Error{"--alpha: in (0, 1)"};
   if (!(s.min_change_ms >= 0.0)) return Error{"--min-change-ms: at least 0"};
   if (s.baseline_commits < 1) return Error{"--baseline-commits: at least 1"};
+  if (s.test != "medians" && s.test != "robust" && s.test != "samples")
+    return Error{"--test: medians, robust or samples, got \"" + s.test + "\""};
   if (s.change_points.window < 2) return Error{"--window: at least 2"};
   if (!(s.change_points.max_pvalue > 0.0 && s.change_points.max_pvalue <= 1.0)) return Error{"--max-pvalue: in (0, 1]"};
   return {};
@@ -29,6 +32,34 @@ const char* gate_verdict_name(GateVerdict v) {
     case GateVerdict::no_baseline: return "new";
   }
   return "same";
+}
+
+double prediction_pvalue(double value, std::span<const double> baseline) {
+  const std::size_t n = baseline.size();
+  if (n < 2) return 1.0;
+  double mean = 0.0;
+  for (double b : baseline) mean += b;
+  mean /= static_cast<double>(n);
+  double ss = 0.0;
+  for (double b : baseline) ss += (b - mean) * (b - mean);
+  const double sd = std::sqrt(ss / static_cast<double>(n - 1));
+  if (!(sd > 0.0)) return value == mean ? 1.0 : 0.0;
+  const double t = (value - mean) / (sd * std::sqrt(1.0 + 1.0 / static_cast<double>(n)));
+  const boost::math::students_t student(static_cast<double>(n - 1));
+  return std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(student, std::abs(t))));
+}
+
+double robust_prediction_pvalue(double value, std::span<const double> baseline) {
+  const std::size_t n = baseline.size();
+  if (n < 2) return 1.0;
+  const double center = median_of(baseline);
+  std::vector<double> deviations;
+  for (double b : baseline) deviations.push_back(std::abs(b - center));
+  const double scale = 1.4826 * median_of(deviations);
+  if (!(scale > 0.0)) return value == center ? 1.0 : 0.0;
+  const double t = (value - center) / (scale * std::sqrt(1.0 + 1.0 / static_cast<double>(n)));
+  const boost::math::students_t student(static_cast<double>(n - 1));
+  return std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(student, std::abs(t))));
 }
 
 SeriesVerdict judge_newest(const std::vector<CommitPoint>& points, std::size_t first, Better better,
@@ -83,8 +114,13 @@ SeriesVerdict judge_newest(const std::vector<CommitPoint>& points, std::size_t f
   const double absolute = std::abs(v.new_median - v.base_median);
   const double floor = unit == "ms" ? settings.min_change_ms : settings.min_change_other;
   bool significant = true;
-  // Samples of a run repeat the measurement: test them when there are enough to reach alpha.
-  if (newest.samples.size() >= 2 && smallest_p_value(static_cast<int>(newest.samples.size()),
+  if (settings.test != "samples" && base_medians.size() >= 3 && most_samples >= 2) {
+    // The run as the unit that varies: the newest commit's median against the spread of the
+    // baseline's commit medians.
+    v.pvalue = settings.test == "robust" ? robust_prediction_pvalue(v.new_median, base_medians)
+                                         : prediction_pvalue(v.new_median, base_medians);
+    significant = v.pvalue < settings.alpha;
+  } else if (newest.samples.size() >= 2 && smallest_p_value(static_cast<int>(newest.samples.size()),
                                                      static_cast<int>(std::min<std::size_t>(base_samples.size(), 1000))) < settings.alpha) {
     v.pvalue = mann_whitney_u(newest.samples, base_samples).p_value;
     significant = v.pvalue < settings.alpha;

@@ -8,9 +8,11 @@
 ///    change point lies among the last `recent` commits, the segment before that change point (a step
 ///    that landed a few commits ago stays a regression until it is acknowledged); at most
 ///    `baseline_commits` commits;
-///  - the newest commit's samples are tested against the baseline's with the two-sided Mann-Whitney U
-///    test. The newest regresses when its median moved the wrong way by more than `threshold`
-///    (relative) and by at least the unit's absolute floor, and p < `alpha`. A move the right way that
+///  - the newest commit's samples are tested against the baseline's (`test`): by default with the
+///    two-sided Mann-Whitney U test over every sample; or the newest commit's median against the
+///    spread of the baseline's commit medians (Student's t prediction test, plain or robust). The
+///    newest regresses when its median moved the wrong way by more than `threshold` (relative) and by
+///    at least the unit's absolute floor, and p < `alpha`. A move the right way that
 ///    passes the same bar is an improvement, reported and never failed; anything less is "same", so
 ///    noise is never reported as an improvement either.
 ///  - A series whose every commit holds fewer samples than the test needs (one value per run, e.g. an
@@ -20,6 +22,7 @@
 #include "harness/history/series_points.h"
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,9 +33,15 @@ struct HistoryGateSettings {
   int recent = 5;                ///< a change point among this many newest commits keeps its step in view
   double threshold = 0.05;       ///< smallest relative change that regresses
   double alpha = 0.01;           ///< significance level of the U test
-  double min_change_ms = 0.01;   ///< series in ms: smallest absolute change that regresses, ms
+  /// Series in ms: smallest absolute change that regresses, ms (1/600 of a 30 fps frame: the stages of
+  /// a few tenths of a millisecond move by that much between runs of one build, docs/history.md).
+  double min_change_ms = 0.05;
   double min_change_other = 1e-9;  ///< other series: smallest absolute change (error figures are ratios near 0)
   int baseline_commits = 30;     ///< most commits in the baseline
+  /// How the newest commit is tested against the baseline: "medians" (the prediction test on the
+  /// commit medians), "robust" (the same with the median and 1.4826 x the median absolute deviation,
+  /// which a few outlying runs in the baseline do not widen) or "samples" (the U test on every sample).
+  std::string test = "samples";
   ChangePointSettings change_points;  ///< for the segments
 };
 
@@ -51,11 +60,20 @@ struct SeriesVerdict {
   double base_median = 0.0;        ///< median of the baseline's commit medians
   double new_median = 0.0;         ///< median of the newest commit's samples
   double change = 0.0;             ///< new / base - 1 (0 when base is 0)
-  double pvalue = -1.0;            ///< U test; < 0 when not tested (too few samples)
+  double pvalue = -1.0;            ///< the test's; < 0 when not tested (too few samples)
   std::size_t baseline_first = 0;  ///< index of the baseline's first commit in the points
   std::size_t baseline_size = 0;   ///< commits in the baseline
   std::string note;                ///< why, in words (e.g. "stepped at 1a2b3c4d5e6f, 2 commits ago")
 };
+
+/// Two-sided p-value of `value` as one more draw from the distribution of `baseline` (at least 2
+/// values): t = (value - mean) / (s sqrt(1 + 1/n)), Student's t with n - 1 degrees of freedom. A
+/// baseline without spread gives 1 for its own value and 0 for any other.
+double prediction_pvalue(double value, std::span<const double> baseline);
+
+/// The same with the baseline's median for its mean and 1.4826 x its median absolute deviation for
+/// its standard deviation (both equal to them for normal data).
+double robust_prediction_pvalue(double value, std::span<const double> baseline);
 
 /// Judges the last of `points` against the ones before it, from `first` (the acknowledged commit's
 /// index, 0 when none). `unit` picks the absolute floor.

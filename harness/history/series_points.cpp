@@ -9,7 +9,7 @@ namespace shatter {
 std::vector<CommitPoint> commit_points(const std::vector<SeriesRun>& runs) {
   std::vector<CommitPoint> points;
   for (const SeriesRun& run : runs) {
-    if (points.empty() || points.back().commit != run.commit) points.push_back(CommitPoint{run.commit, run.commit_time, {}, 0.0, true});
+    if (points.empty() || points.back().commit != run.commit) points.push_back(CommitPoint{run.commit, run.commit_time, run.branch, {}, 0.0, true});
     CommitPoint& p = points.back();
     p.samples.insert(p.samples.end(), run.samples.begin(), run.samples.end());
     p.passed = p.passed && run.passed;

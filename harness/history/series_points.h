@@ -17,6 +17,7 @@ namespace shatter {
 struct CommitPoint {
   std::string commit;            ///< sha
   std::int64_t time = 0;         ///< committer time
+  std::string branch;            ///< the commit's branch
   std::vector<double> samples;   ///< every sample of every run at the commit
   double median = 0.0;           ///< of the samples
   bool passed = true;            ///< every run at the commit passed its own checks

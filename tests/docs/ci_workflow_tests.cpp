@@ -64,12 +64,15 @@ std::vector<std::string> logical_lines(const std::string& script) {
   return out;
 }
 
-/// What the built CLI's --help of `command` says (cached).
+/// What the built CLI's --help of `command` says (cached); `command` may be a command and its
+/// subcommand ("history gate").
 const std::string& help_of(const std::string& command) {
   static std::map<std::string, std::string> cache;
   auto it = cache.find(command);
   if (it == cache.end()) {
-    const test::CliRun run = command.empty() ? test::run_cli_argv({"--help"}) : test::run_cli_argv({command, "--help"});
+    std::vector<std::string> args = words(command);
+    args.push_back("--help");
+    const test::CliRun run = test::run_cli_argv(args);
     REQUIRE(run.exit_code == 0);
     it = cache.emplace(command, run.out).first;
   }
@@ -90,12 +93,20 @@ std::vector<std::string> problems_of(const std::string& line) {
       out.push_back("shatterbench without a command");
       continue;
     }
-    const std::string command = w[i + 1];
+    std::string command = w[i + 1];
     if (help_of("").find("\n  " + command + " ") == std::string::npos) {
       out.push_back("no command " + command);
       continue;
     }
-    for (std::size_t k = i + 2; k < w.size(); ++k) {
+    std::size_t first_flag = i + 2;
+    if (command == "history") {  // a command of subcommands: its flags are the subcommand's
+      if (first_flag >= w.size() || help_of("history").find("\n  " + w[first_flag] + " ") == std::string::npos) {
+        out.push_back("no history subcommand " + (first_flag < w.size() ? w[first_flag] : std::string()));
+        continue;
+      }
+      command += " " + w[first_flag++];
+    }
+    for (std::size_t k = first_flag; k < w.size(); ++k) {
       if (w[k] == "||" || w[k] == "&&" || w[k] == "|" || w[k] == ";") break;
       if (w[k].rfind("--", 0) != 0) continue;
       const std::string flag = w[k].substr(0, w[k].find('='));
@@ -110,8 +121,11 @@ std::vector<std::string> problems_of(const std::string& line) {
 
 }  // namespace
 
-TEST_CASE("ci workflow: valid YAML that names only commands, flags and scripts that exist", "[docs][cli]") {
-  const fs::path file = fs::path(SHATTER_SOURCE_DIR) / "docs" / "ci" / "shatterbench-gate.yml";
+namespace {
+
+/// Checks one workflow file; the number of shatterbench calls in it.
+int check_workflow(const std::string& name) {
+  const fs::path file = fs::path(SHATTER_SOURCE_DIR) / "docs" / "ci" / name;
   REQUIRE(fs::exists(file));
   YAML::Node doc;
   REQUIRE_NOTHROW(doc = YAML::LoadFile(file.string()));
@@ -119,7 +133,7 @@ TEST_CASE("ci workflow: valid YAML that names only commands, flags and scripts t
   REQUIRE(doc["on"]);
   int runs = 0, calls = 0;
   for (const auto& job : doc["jobs"]) {
-    INFO("job " << job.first.as<std::string>());
+    INFO(name << ": job " << job.first.as<std::string>());
     REQUIRE(job.second["runs-on"]);
     REQUIRE(job.second["steps"].IsSequence());
     for (const auto& step : job.second["steps"]) {
@@ -134,12 +148,22 @@ TEST_CASE("ci workflow: valid YAML that names only commands, flags and scripts t
       }
     }
   }
-  CHECK(runs >= 5);
-  CHECK(calls >= 3);  // grid, merge, compare
+  CHECK(runs >= 4);
+  return calls;
+}
+
+}  // namespace
+
+TEST_CASE("ci workflow: valid YAML that names only commands, flags and scripts that exist", "[docs][cli]") {
+  CHECK(check_workflow("shatterbench-gate.yml") >= 3);     // grid, merge, compare
+  CHECK(check_workflow("shatterbench-history.yml") >= 3);  // grid, history record, history gate
 
   // The checks can fail: a command, a flag and a script that do not exist are found.
   CHECK(problems_of("build/bin/shatterbench grid --case x --no-such-flag 1").size() == 1);
   CHECK(problems_of("build/bin/shatterbench frobnicate --json a").size() == 1);
   CHECK(problems_of("scripts/no-such-script").size() == 1);
   CHECK(problems_of("build/bin/shatterbench compare a b --junit x --markdown y || test $? -eq 1").empty());
+  CHECK(problems_of("build/bin/shatterbench history gate --commit x --markdown y").empty());
+  CHECK(problems_of("build/bin/shatterbench history gate --commit x --max-slowdown 1").size() == 1);
+  CHECK(problems_of("build/bin/shatterbench history frobnicate --db x").size() == 1);
 }

@@ -73,6 +73,7 @@ struct SeriesRun {
   std::string run_id;
   std::string commit;         ///< sha
   std::int64_t commit_time = 0;
+  std::string branch;         ///< the commit's branch as first recorded
   bool passed = true;         ///< the run's verdict
   std::vector<double> samples;
 };

@@ -237,13 +237,14 @@ Result<std::vector<SeriesInfo>> HistoryStore::list_series(const SeriesFilter& fi
 Result<std::vector<SeriesRun>> HistoryStore::series_runs(std::int64_t series, std::int64_t since_time) {
   std::vector<SeriesRun> out;
   Status s = db_->for_each_row(
-      "SELECT m.run_id, r.commit_sha, c.commit_time, r.passed, m.samples FROM sb_measurements m "
+      "SELECT m.run_id, r.commit_sha, c.commit_time, c.branch, r.passed, m.samples FROM sb_measurements m "
       "JOIN sb_runs r ON r.id = m.run_id JOIN sb_commits c ON c.sha = r.commit_sha "
       "WHERE m.series_id = ? AND c.commit_time >= ? ORDER BY c.commit_time, c.sha, r.recorded_at, m.run_id",
       {series, since_time}, [&](const SqlRow& r) -> Status {
-        Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[4]));
+        Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[5]));
         if (!samples) return Error{fmt::format("{}: run {}: {}", name(), sql_text(r[0]), samples.error().message)};
-        out.push_back(SeriesRun{sql_text(r[0]), sql_text(r[1]), sql_int(r[2]), sql_int(r[3]) != 0, std::move(*samples)});
+        out.push_back(SeriesRun{sql_text(r[0]), sql_text(r[1]), sql_int(r[2]), sql_text(r[3]), sql_int(r[4]) != 0,
+                                std::move(*samples)});
         return {};
       });
   if (!s) return s.error();
@@ -264,7 +265,7 @@ Result<std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>>> HistoryStore:
   if (out.empty()) return out;
   std::vector<SqlValue> params;
   const std::string sql = fmt::format(
-      "SELECT m.series_id, m.run_id, r.commit_sha, c.commit_time, r.passed, m.samples FROM sb_measurements m "
+      "SELECT m.series_id, m.run_id, r.commit_sha, c.commit_time, c.branch, r.passed, m.samples FROM sb_measurements m "
       "JOIN sb_series s ON s.id = m.series_id JOIN sb_runs r ON r.id = m.run_id "
       "JOIN sb_commits c ON c.sha = r.commit_sha WHERE {} AND c.commit_time >= ? "
       "ORDER BY c.commit_time, c.sha, r.recorded_at, m.run_id",
@@ -273,10 +274,10 @@ Result<std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>>> HistoryStore:
   Status s = db_->for_each_row(sql, params, [&](const SqlRow& r) -> Status {
     const auto found = at.find(sql_int(r[0]));
     if (found == at.end()) return {};
-    Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[5]));
+    Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[6]));
     if (!samples) return Error{fmt::format("{}: run {}: {}", name(), sql_text(r[1]), samples.error().message)};
-    out[found->second].second.push_back(
-        SeriesRun{sql_text(r[1]), sql_text(r[2]), sql_int(r[3]), sql_int(r[4]) != 0, std::move(*samples)});
+    out[found->second].second.push_back(SeriesRun{sql_text(r[1]), sql_text(r[2]), sql_int(r[3]), sql_text(r[4]),
+                                                  sql_int(r[5]) != 0, std::move(*samples)});
     return {};
   });
   if (!s) return s.error();

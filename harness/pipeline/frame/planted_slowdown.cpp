@@ -4,6 +4,7 @@
 #include "harness/pipeline/stage.h"
 
 #include <cstdint>
+#include <cstdlib>
 
 namespace shatter {
 namespace {
@@ -26,13 +27,25 @@ void planted_work(double step_cpu_ms, double share) {
 
 }  // namespace
 
-double planted_slowdown_share() { return kShare; }
+double planted_slowdown_share() {
+  if constexpr (kShare > 0.0) {
+    // The planted build only: SHATTER_PLANTED_SHARE sets another share, so one build measures the
+    // smallest slowdown a gate finds (scripts/gate-power).
+    static const double share = [] {
+      const char* env = std::getenv("SHATTER_PLANTED_SHARE");
+      const double v = env != nullptr ? std::strtod(env, nullptr) : kShare;
+      return v >= 0.0 && v <= 10.0 ? v : kShare;
+    }();
+    return share;
+  }
+  return kShare;
+}
 
 void step_physics(PhysicsWorld& world) {
   if constexpr (kShare > 0.0) {
     const double step_start = thread_cpu_ms();
     world.step();
-    planted_work(thread_cpu_ms() - step_start, kShare);
+    planted_work(thread_cpu_ms() - step_start, planted_slowdown_share());
   } else {
     world.step();
   }

@@ -8,8 +8,8 @@ namespace shatter {
 
 class PhysicsWorld;
 
-/// The share of a physics step's thread CPU time added as arithmetic after it: 0.10 in a build with
-/// SHATTER_PLANTED_SLOWDOWN, else 0.
+/// The share of a physics step's thread CPU time added as arithmetic after it: in a build with
+/// SHATTER_PLANTED_SLOWDOWN 0.10, or the environment's SHATTER_PLANTED_SHARE (0 to 10); else 0.
 double planted_slowdown_share();
 
 /// One physics step of `world`, then the planted slowdown when the build has one.

@@ -106,7 +106,7 @@ TEST_CASE("history gate passes a quiet history and fails a run over its budget",
   const CliRun quiet = run_cli_argv({"history", "gate", "--commit", h.shas.back().substr(0, 10), "--db", h.db});
   INFO(quiet.err);
   CHECK(quiet.exit_code == 0);
-  CHECK(quiet.out.find("0 regressed and 0 failed run(s)") != std::string::npos);
+  CHECK(quiet.out.find("0 regressed, 0 improved and 0 failed run(s)") != std::string::npos);
   // One more commit whose run broke a 2 ms budget (the worst frame is 3 ms): a failed run.
   const std::string sha = git_in(h.repo, {"-c", "user.name=t", "-c", "user.email=t@example.org", "commit", "-q",
                                           "--allow-empty", "-m", "over budget"});
@@ -166,17 +166,17 @@ TEST_CASE("grid, accuracy and table --record put their runs in the store at the 
                                     "2", "--frames", "20", "--record", "--db", db}, source);
   INFO(grid.err);
   REQUIRE(grid.exit_code == 0);
-  CHECK(grid.out.find("recorded building.json (grid building") != std::string::npos);
+  CHECK(grid.err.find("recorded building.json (grid building") != std::string::npos);
   const CliRun table = run_cli_argv({"table", "--mesh", "data/meshes/sphere.off", "--algo", "plane-slice", "--fragments", "5",
                                      "--repetitions", "2", "--json", (dir / "t.json").string(), "--record", "--db", db}, source);
   INFO(table.err);
   REQUIRE(table.exit_code == 0);
-  CHECK(table.out.find("recorded t.json (table") != std::string::npos);
+  CHECK(table.err.find("recorded t.json (table") != std::string::npos);
   const CliRun accuracy = run_cli_argv({"accuracy", "--case", "cantilever", "--family", "stress", "--model", "von-mises",
                                         "--repetitions", "1", "--record", "--db", db}, source);
   INFO(accuracy.err);
   REQUIRE(accuracy.exit_code == 0);
-  CHECK(accuracy.out.find("recorded accuracy.json (accuracy") != std::string::npos);
+  CHECK(accuracy.err.find("recorded accuracy.json (accuracy") != std::string::npos);
 
   const CliRun show = run_cli_argv({"history", "show", "--db", db, "--metric", "time_ms", "--last", "1"});
   REQUIRE(show.exit_code == 0);
@@ -191,4 +191,27 @@ TEST_CASE("grid, accuracy and table --record put their runs in the store at the 
   const CliRun stray = run_cli_argv({"table", "--mesh", "data/meshes/sphere.off", "--db", db}, source);
   CHECK(stray.exit_code == 2);
   CHECK(stray.err.find("--db: only with --record") != std::string::npos);
+}
+
+TEST_CASE("history gate --baseline-branch judges a pull request against its target's commits only", "[history][cli]") {
+  const fs::path dir = history_scratch("cli_baseline_branch");
+  const std::string db = (dir / "h.sqlite").string(), repo = (dir / "repo").string();
+  const std::vector<std::string> shas = make_commits(repo, 23);
+  // main: 14 commits at scale 1; a feature branch: 8 commits 30 % slower; the pull request: scale 1.
+  for (std::size_t i = 0; i < shas.size(); ++i) {
+    const bool feature = i >= 14 && i < 22;
+    const auto file = write_text(dir / ("r" + std::to_string(i) + ".json"),
+                                 synthetic_grid_text(feature ? 1.3 : 1.0, 0.01, 300 + i, shas[i].substr(0, 12)));
+    const std::string branch = i < 14 ? "main" : feature ? "feature" : "pr";
+    REQUIRE(run_cli_argv({"history", "record", file.string(), "--db", db, "--repo", repo, "--branch", branch}).exit_code == 0);
+  }
+  const CliRun all = run_cli_argv({"history", "gate", "--commit", shas[22], "--db", db, "--metric", "cpu_ms"});
+  INFO(all.err);
+  CHECK(all.exit_code == 0);
+  CHECK(all.out.find(", 0 improved and") == std::string::npos);  // against the feature's level it looks faster
+  const CliRun main_only = run_cli_argv({"history", "gate", "--commit", shas[22], "--db", db, "--metric", "cpu_ms",
+                                         "--baseline-branch", "main"});
+  INFO(main_only.err);
+  CHECK(main_only.exit_code == 0);
+  CHECK(main_only.out.find("0 regressed, 0 improved and 0 failed run(s)") != std::string::npos);
 }

@@ -2,10 +2,12 @@
 // construction: planted steps in the newest commits, noise alone, an acknowledged step, deterministic
 // figures.
 
+#include "harness/history/calibration_scaling.h"
 #include "harness/history/history_gate.h"
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -115,4 +117,28 @@ TEST_CASE("history gate: settings out of range name their flag", "[history][gate
   REQUIRE_FALSE(bad);
   CHECK(bad.error().message.find("--alpha") == 0);
   CHECK(check_history_gate_settings(HistoryGateSettings{}));
+}
+
+TEST_CASE("history gate: the prediction test against the commit medians", "[history][gate]") {
+  const std::vector<double> base = {1.0, 2.0, 3.0};  // mean 2, s 1, n 3: t with 2 degrees of freedom
+  CHECK(prediction_pvalue(2.0, base) == Approx(1.0));
+  // t = 4.302653 is the 0.975 quantile of Student's t with 2 degrees of freedom: p = 0.05.
+  CHECK(prediction_pvalue(2.0 + 4.302653 * std::sqrt(4.0 / 3.0), base) == Approx(0.05).epsilon(1e-5));
+  CHECK(prediction_pvalue(2.0 - 4.302653 * std::sqrt(4.0 / 3.0), base) == Approx(0.05).epsilon(1e-5));
+  const std::vector<double> flat = {5.0, 5.0, 5.0, 5.0};
+  CHECK(prediction_pvalue(5.0, flat) == 1.0);
+  CHECK(prediction_pvalue(5.1, flat) == 0.0);
+}
+
+TEST_CASE("history gate: a run on a busier machine is judged per calibration", "[history][gate]") {
+  // The same work timed on a machine half as fast: twice the time, twice the calibration.
+  std::vector<SeriesRun> runs = {{"r1", "c1", 1, "main", true, {1.0, 1.0}}, {"r2", "c2", 2, "main", true, {2.0, 2.0}}};
+  RunCalibrations calibration = {{"r1", {10.0, 10.0}}, {"r2", {20.0, 20.0}}};
+  REQUIRE(normalize_by_calibration(runs, calibration));
+  CHECK(runs[0].samples == std::vector<double>{1.5, 1.5});  // scaled to the median calibration, 15
+  CHECK(runs[1].samples == std::vector<double>{1.5, 1.5});
+  // A run without one calibration per sample: nothing changes.
+  std::vector<SeriesRun> partial = {{"r1", "c1", 1, "main", true, {1.0, 1.0}}, {"r3", "c3", 3, "main", true, {2.0}}};
+  CHECK_FALSE(normalize_by_calibration(partial, calibration));
+  CHECK(partial[1].samples == std::vector<double>{2.0});
 }
