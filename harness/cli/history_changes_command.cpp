@@ -50,13 +50,11 @@ int run_store(const ChangesOptions& o) {
     if (!c) return fail_input("--since: " + c.error().message);
     since = c->time;
   }
-  auto all = store->filtered_series_runs(o.filter, since);
-  if (!all) return fail_input(all.error().message);
   std::size_t stepped = 0, regressions = 0, count = 0;
   std::string table;
-  for (const auto& [info, runs] : *all) {
+  Status visited = store->visit_series_runs(o.filter, since, [&](const SeriesInfo& info, std::vector<SeriesRun>& runs) {
     const std::vector<CommitPoint> points = commit_points(runs);
-    if (points.empty()) continue;
+    if (points.empty()) return Status{};
     ++count;
     const std::vector<SeriesChange> changes = series_changes(points, info.key.better, o.settings);
     if (!changes.empty()) ++stepped;
@@ -66,7 +64,9 @@ int run_store(const ChangesOptions& o) {
                            c.commit.substr(0, 12), c.index, c.median_before, c.median_after, 100.0 * c.change, c.pvalue,
                            c.kind == ChangeKind::regression ? "**regression**" : change_kind_name(c.kind));
     }
-  }
+    return Status{};
+  });
+  if (!visited) return fail_input(visited.error().message);
   std::cout << fmt::format("{} series, {} with change points, {} regression steps (window {}, max p-value {}, min "
                            "magnitude {}; {})\n\n",
                            count, stepped, regressions, o.settings.window, o.settings.max_pvalue, o.settings.min_magnitude,

@@ -50,12 +50,11 @@ int run_show(const ShowOptions& o) {
   Result<std::optional<std::int64_t>> from = store->recent_commit_time(o.filter.case_name, o.last + o.settings.window - 1);
   if (!from) return fail_input(from.error().message);
   if (*from) since = **from;
-  auto all = store->filtered_series_runs(o.filter, since);
-  if (!all) return fail_input(all.error().message);
   std::size_t shown = 0;
-  for (const auto& [info, runs] : *all) {
+  std::string page;
+  Status visited = store->visit_series_runs(o.filter, since, [&](const SeriesInfo& info, std::vector<SeriesRun>& runs) {
     const std::vector<CommitPoint> points = commit_points(runs);
-    if (points.empty()) continue;
+    if (points.empty()) return Status{};
     ++shown;
     std::set<std::size_t> steps;
     for (const SeriesChange& c : series_changes(points, info.key.better, o.settings)) steps.insert(c.index);
@@ -63,10 +62,10 @@ int run_show(const ShowOptions& o) {
     std::vector<double> medians;
     for (std::size_t i = first; i < points.size(); ++i) medians.push_back(points[i].median);
     const SeriesKey& k = info.key;
-    std::cout << fmt::format("### {}\n{}  {}, {}\n\n", markdown_cell(series_label(k)), sparkline(medians),
+    page += fmt::format("### {}\n{}  {}, {}\n\n", markdown_cell(series_label(k)), sparkline(medians),
                              k.unit.empty() ? "ratio" : k.unit,
                              k.better == Better::none ? "no direction" : fmt::format("{} is better", better_name(k.better)));
-    std::cout << "| commit | date | samples | median | min | max | step |\n|---|---|---:|---:|---:|---:|---|\n";
+    page += "| commit | date | samples | median | min | max | step |\n|---|---|---:|---:|---:|---:|---|\n";
     for (std::size_t i = first; i < points.size(); ++i) {
       const CommitPoint& p = points[i];
       const auto [lo, hi] = std::minmax_element(p.samples.begin(), p.samples.end());
@@ -76,11 +75,15 @@ int run_show(const ShowOptions& o) {
         const double change = before != 0.0 ? p.median / before - 1.0 : 0.0;
         step = fmt::format("**{} {:+.1f} %**", change_kind_name(classify_change(change, k.better)), 100.0 * change);
       }
-      std::cout << fmt::format("| {} | {} | {} | {:.6g} | {:.6g} | {:.6g} | {} |\n", p.commit.substr(0, 12), date_of(p.time),
-                               p.samples.size(), p.median, *lo, *hi, step);
+      page += fmt::format("| {} | {} | {} | {:.6g} | {:.6g} | {:.6g} | {} |\n", p.commit.substr(0, 12), date_of(p.time),
+                          p.samples.size(), p.median, *lo, *hi, step);
     }
-    std::cout << '\n';
-  }
+    page += '\n';
+    return Status{};
+  });
+  // Printed whole or not at all: a store error midway leaves no partial page.
+  if (!visited) return fail_input(visited.error().message);
+  std::cout << page;
   if (shown == 0) std::cout << fmt::format("no series match in {}\n", store->name());
   return exit_ok;
 }

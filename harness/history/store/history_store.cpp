@@ -251,34 +251,89 @@ Result<std::vector<SeriesRun>> HistoryStore::series_runs(std::int64_t series, st
   return out;
 }
 
-Result<std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>>> HistoryStore::filtered_series_runs(
-    const SeriesFilter& filter, std::int64_t since_time) {
+Status HistoryStore::visit_series_runs(const SeriesFilter& filter, std::int64_t since_time,
+                                       const std::function<Status(const SeriesInfo&, std::vector<SeriesRun>&)>& visit) {
   Result<std::vector<SeriesInfo>> list = list_series(filter);
   if (!list) return list.error();
-  std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>> out;
-  out.reserve(list->size());
-  std::unordered_map<std::int64_t, std::size_t> at;
-  for (SeriesInfo& s : *list) {
-    at.emplace(s.id, out.size());
-    out.emplace_back(std::move(s), std::vector<SeriesRun>{});
-  }
-  if (out.empty()) return out;
-  std::vector<SqlValue> params;
-  const std::string sql = fmt::format(
-      "SELECT m.series_id, m.run_id, r.commit_sha, c.commit_time, c.branch, r.passed, m.samples FROM sb_measurements m "
-      "JOIN sb_series s ON s.id = m.series_id JOIN sb_runs r ON r.id = m.run_id "
-      "JOIN sb_commits c ON c.sha = r.commit_sha WHERE {} AND c.commit_time >= ? "
-      "ORDER BY c.commit_time, c.sha, r.recorded_at, m.run_id",
-      series_where(*db_, filter, params));
-  params.emplace_back(since_time);
-  Status s = db_->for_each_row(sql, params, [&](const SqlRow& r) -> Status {
-    const auto found = at.find(sql_int(r[0]));
-    if (found == at.end()) return {};
-    Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[6]));
-    if (!samples) return Error{fmt::format("{}: run {}: {}", name(), sql_text(r[1]), samples.error().message)};
-    out[found->second].second.push_back(SeriesRun{sql_text(r[1]), sql_text(r[2]), sql_int(r[3]), sql_text(r[4]),
-                                                  sql_int(r[5]) != 0, std::move(*samples)});
+  if (list->empty()) return {};
+  // The runs in range, in commit order; a measurement is placed by its run's position.
+  struct RunOrder {
+    std::string commit;
+    std::int64_t time;
+    std::string branch;
+    bool passed;
+  };
+  std::vector<std::string> run_ids;
+  std::vector<RunOrder> runs;
+  std::unordered_map<std::string, std::size_t> position;
+  Status listed = db_->for_each_row(
+      "SELECT r.id, r.commit_sha, c.commit_time, c.branch, r.passed FROM sb_runs r JOIN sb_commits c ON c.sha = r.commit_sha "
+      "WHERE c.commit_time >= ? ORDER BY c.commit_time, c.sha, r.recorded_at, r.id",
+      {since_time}, [&](const SqlRow& r) {
+        position.emplace(sql_text(r[0]), runs.size());
+        run_ids.push_back(sql_text(r[0]));
+        runs.push_back({sql_text(r[1]), sql_int(r[2]), sql_text(r[3]), sql_int(r[4]) != 0});
+        return Status{};
+      });
+  if (!listed) return listed;
+  Result<std::int64_t> total = run_count();
+  if (!total) return total.error();
+
+  auto make_run = [&](std::size_t at, const std::string& blob) -> Result<SeriesRun> {
+    Result<std::vector<double>> samples = samples_from_blob(blob);
+    if (!samples) return Error{fmt::format("{}: run {}: {}", name(), run_ids[at], samples.error().message)};
+    const RunOrder& o = runs[at];
+    return SeriesRun{run_ids[at], o.commit, o.time, o.branch, o.passed, std::move(*samples)};
+  };
+  if (runs.size() * 4 <= static_cast<std::size_t>(*total)) {
+    // A recent window: every measurement of each run in range, by the primary key.
+    std::unordered_map<std::int64_t, std::size_t> index_of;
+    for (std::size_t i = 0; i < list->size(); ++i) index_of.emplace((*list)[i].id, i);
+    std::vector<std::vector<SeriesRun>> per_series(list->size());
+    for (std::size_t at = 0; at < runs.size(); ++at) {
+      Status s = db_->for_each_row("SELECT series_id, samples FROM sb_measurements WHERE run_id = ?", {run_ids[at]},
+                                   [&](const SqlRow& r) -> Status {
+                                     const auto found = index_of.find(sql_int(r[0]));
+                                     if (found == index_of.end()) return {};
+                                     Result<SeriesRun> run = make_run(at, sql_blob(r[1]));
+                                     if (!run) return run.error();
+                                     per_series[found->second].push_back(std::move(*run));
+                                     return {};
+                                   });
+      if (!s) return s;
+    }
+    for (std::size_t i = 0; i < list->size(); ++i)
+      if (Status s = visit((*list)[i], per_series[i]); !s) return s;
     return {};
+  }
+  // A long history: each series' measurements by the series index, placed in commit order.
+  for (const SeriesInfo& info : *list) {
+    std::vector<std::pair<std::size_t, SeriesRun>> placed;
+    Status s = db_->for_each_row("SELECT run_id, samples FROM sb_measurements WHERE series_id = ?", {info.id},
+                                 [&](const SqlRow& r) -> Status {
+                                   const auto found = position.find(sql_text(r[0]));
+                                   if (found == position.end()) return {};  // before since_time
+                                   Result<SeriesRun> run = make_run(found->second, sql_blob(r[1]));
+                                   if (!run) return run.error();
+                                   placed.emplace_back(found->second, std::move(*run));
+                                   return {};
+                                 });
+    if (!s) return s;
+    std::sort(placed.begin(), placed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<SeriesRun> ordered;
+    ordered.reserve(placed.size());
+    for (auto& p : placed) ordered.push_back(std::move(p.second));
+    if (Status v = visit(info, ordered); !v) return v;
+  }
+  return {};
+}
+
+Result<std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>>> HistoryStore::filtered_series_runs(
+    const SeriesFilter& filter, std::int64_t since_time) {
+  std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>> out;
+  Status s = visit_series_runs(filter, since_time, [&out](const SeriesInfo& info, std::vector<SeriesRun>& runs) {
+    out.emplace_back(info, std::move(runs));
+    return Status{};
   });
   if (!s) return s.error();
   return out;

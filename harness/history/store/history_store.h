@@ -10,6 +10,7 @@
 #include "harness/history/store/history_model.h"
 #include "harness/history/store/sql_connection.h"
 
+#include <functional>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -67,7 +68,12 @@ class HistoryStore {
   /// or after `since_time`.
   Result<std::vector<SeriesRun>> series_runs(std::int64_t series,
                                              std::int64_t since_time = std::numeric_limits<std::int64_t>::min());
-  /// The same for every series of `filter` at once, in the order of list_series (one query).
+  /// Hands every series of `filter`, in the order of list_series, to `visit` with its runs in commit
+  /// order from commits at or after `since_time`; a series is held only while it is visited. Reads a
+  /// few recent runs run by run (the primary key), and a long history series by series (the index).
+  Status visit_series_runs(const SeriesFilter& filter, std::int64_t since_time,
+                           const std::function<Status(const SeriesInfo&, std::vector<SeriesRun>&)>& visit);
+  /// Every series of `filter` with its runs (visit_series_runs, collected).
   Result<std::vector<std::pair<SeriesInfo, std::vector<SeriesRun>>>> filtered_series_runs(
       const SeriesFilter& filter, std::int64_t since_time = std::numeric_limits<std::int64_t>::min());
 

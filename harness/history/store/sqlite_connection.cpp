@@ -119,7 +119,10 @@ Result<std::unique_ptr<SqlConnection>> open_sqlite(const std::filesystem::path& 
   sqlite3_busy_timeout(db, static_cast<int>(std::lround(options.lock_timeout_s * 1000.0)));
   sqlite3_extended_result_codes(db, 1);
   // WAL: readers and one writer at once; FULL: a committed run survives a crash of the machine too.
-  for (const char* pragma : {"PRAGMA journal_mode=WAL", "PRAGMA synchronous=FULL", "PRAGMA foreign_keys=ON"}) {
+  // Reads through a memory map and a 64 MiB page cache: a series' measurements are spread over the
+  // whole file (one run after another), and read() of every page was most of a long query's time.
+  for (const char* pragma : {"PRAGMA journal_mode=WAL", "PRAGMA synchronous=FULL", "PRAGMA foreign_keys=ON",
+                             "PRAGMA mmap_size=4294967296", "PRAGMA cache_size=-65536"}) {
     Result<std::vector<SqlRow>> r = connection->query(pragma, {});
     if (!r) return r.error();
   }
