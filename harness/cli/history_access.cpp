@@ -8,6 +8,7 @@
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
+#include <cstdio>
 #include <iostream>
 #include <map>
 
@@ -85,6 +86,11 @@ Status check_record_target(const RecordFlags& flags) {
   if (commit.empty()) return Error{"--record: this shatterbench was built outside a git checkout: record with history record --commit"};
   Result<CommitInfo> info = resolve_commit(".", commit);
   if (!info) return Error{"--record: " + info.error().message};
+  // A build configured at an older commit records there: say so, since the checkout has moved on.
+  if (Result<CommitInfo> head = resolve_commit(".", "HEAD"); head && head->sha != info->sha)
+    std::fprintf(stderr, "shatterbench: warning: --record: this build is of commit %s, the checkout is at %s; the run is "
+                 "recorded at %s (reconfigure, e.g. scripts/build, to build the checkout's commit)\n",
+                 info->sha.substr(0, 12).c_str(), head->sha.substr(0, 12).c_str(), info->sha.substr(0, 12).c_str());
   Result<HistoryStore> store = open_store(flags.store, true);
   if (!store) return Error{"--record: " + store.error().message};
   return {};
