@@ -3,6 +3,7 @@
 #include "harness/cli/command.h"
 #include "harness/history/git_commit.h"
 #include "harness/history/results_run.h"
+#include "harness/history/store/postgres_connection.h"
 #include "harness/results/run_context.h"
 
 #include <fmt/core.h>
@@ -59,10 +60,12 @@ int record_results(const std::vector<ResultsText>& results, const StoreFlags& st
   }
   Result<HistoryStore> db = open_store(store, true);
   if (!db) return fail_input(db.error().message);
-  for (const RunRecord& run : runs) {
-    Result<bool> added = db->record(run);
-    if (!added) return fail_input(added.error().message);
-    report << fmt::format("{} {} ({} {}, {} series) at {} into {}\n", *added ? "recorded" : "already recorded",
+  // Every file in one transaction: a failure records none of them.
+  Result<std::vector<bool>> added = db->record_all(runs);
+  if (!added) return fail_input(added.error().message);
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const RunRecord& run = runs[i];
+    report << fmt::format("{} {} ({} {}, {} series) at {} into {}\n", (*added)[i] ? "recorded" : "already recorded",
                              run.source, run.kind, run.case_name, run.measurements.size(), run.commit.sha.substr(0, 12),
                              db->name());
   }
@@ -91,8 +94,15 @@ Status check_record_target(const RecordFlags& flags) {
     std::fprintf(stderr, "shatterbench: warning: --record: this build is of commit %s, the checkout is at %s; the run is "
                  "recorded at %s (reconfigure, e.g. scripts/build, to build the checkout's commit)\n",
                  info->sha.substr(0, 12).c_str(), head->sha.substr(0, 12).c_str(), info->sha.substr(0, 12).c_str());
-  Result<HistoryStore> store = open_store(flags.store, true);
-  if (!store) return Error{"--record: " + store.error().message};
+  // A store that is there (a file, a server) is opened now, so that a locked file, an unreachable
+  // server or a store of a newer version stops the command before its run; a file not yet there is
+  // made only when the run is recorded.
+  const std::string location = history_store_location(flags.store.db);
+  std::error_code ec;
+  if (is_postgres_url(location) || std::filesystem::exists(location, ec)) {
+    Result<HistoryStore> store = open_store(flags.store, true);
+    if (!store) return Error{"--record: " + store.error().message};
+  }
   return {};
 }
 

@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
+#include <tuple>
 #include <memory>
 #include <string>
 
@@ -104,6 +105,10 @@ int run_gate(const GateOptions& o) {
   auto cell_key = [](const SeriesKey& k) { return k.case_name + '\x1f' + k.fingerprint + '\x1f' + k.subject; };
   for (const auto& [info, calibration_runs] : *calibrations)
     for (const SeriesRun& run : calibration_runs) calibration_of[cell_key(info.key)][run.run_id] = run.samples;
+  Result<std::vector<Acknowledgement>> acks = store->all_acknowledgements();
+  if (!acks) return fail_input(acks.error().message);
+  std::multimap<std::int64_t, Acknowledgement> acks_of;
+  for (Acknowledgement& a : *acks) acks_of.emplace(a.series_id, std::move(a));
   std::vector<GateRow> rows;
   for (auto& [info, series_runs] : *all) {
     if (info.key.better == Better::none) continue;
@@ -111,23 +116,31 @@ int run_gate(const GateOptions& o) {
     // calibrated, unless asked for by name: a shared machine moves them by more than a gate can bear.
     if (o.filter.metric.empty() && info.key.kind == "grid" && info.key.unit == "ms" && info.key.metric != "cpu_ms")
       continue;
+    // The judged runs: up to the gated commit; of the baseline branch (the gated commit's own always);
+    // none made from a working tree with changes but the gated commit's.
+    const auto last = std::find_if(series_runs.rbegin(), series_runs.rend(),
+                                   [&](const SeriesRun& r) { return r.commit == commit->sha; });
+    if (last == series_runs.rend()) continue;  // the gated commit did not measure this series
+    series_runs.erase(last.base(), series_runs.end());
+    std::erase_if(series_runs, [&](const SeriesRun& r) {
+      if (r.commit == commit->sha) return false;
+      return r.dirty || (!o.baseline_branch.empty() && r.branch != o.baseline_branch);
+    });
+    // CPU times per calibration, scaled by the judged runs' own median calibration.
     bool normalized = false;
     if (info.key.kind == "grid" && info.key.metric == "cpu_ms" && info.key.what != "calibration")
       if (const auto c = calibration_of.find(cell_key(info.key)); c != calibration_of.end())
         normalized = normalize_by_calibration(series_runs, c->second);
-    std::vector<CommitPoint> points = commit_points(series_runs);
-    const auto at = std::find_if(points.begin(), points.end(), [&](const CommitPoint& p) { return p.commit == commit->sha; });
-    if (at == points.end()) continue;  // the gated commit did not measure this series
-    points.erase(at + 1, points.end());
-    // A pull request is judged against its target's history: other branches' commits are left out.
-    if (!o.baseline_branch.empty())
-      std::erase_if(points, [&](const CommitPoint& p) { return p.commit != commit->sha && p.branch != o.baseline_branch; });
-    Result<std::vector<Acknowledgement>> acks = store->acknowledgements(info.id);
-    if (!acks) return fail_input(acks.error().message);
+    const std::vector<CommitPoint> points = commit_points(series_runs);
+    // Judged from the latest acknowledgement on: the first point at or after its commit.
     std::size_t first = 0;
-    for (const Acknowledgement& a : *acks)
+    for (auto a = acks_of.lower_bound(info.id); a != acks_of.end() && a->first == info.id; ++a)
       for (std::size_t i = 0; i < points.size(); ++i)
-        if (points[i].commit == a.commit) first = std::max(first, i);
+        if (std::make_tuple(points[i].time, points[i].generation, points[i].commit) >=
+            std::make_tuple(a->second.commit_time, a->second.generation, a->second.commit)) {
+          first = std::max(first, i);
+          break;
+        }
     rows.push_back(GateRow{info, judge_newest(points, first, info.key.better, info.key.unit, o.settings)});
     if (normalized) rows.back().verdict.note = "per calibration" + (rows.back().verdict.note.empty() ? "" : "; " + rows.back().verdict.note);
   }
@@ -159,7 +172,8 @@ int run_gate(const GateOptions& o) {
     for (const GateRow& r : rows) {
       JunitCase c{series_label(r.series.key), suite.name, 0.0, {}, {}, {}, {}};
       if (r.verdict.verdict == GateVerdict::regressed) {
-        c.failure = fmt::format("regressed {:+.2f} % (p {:.2g}) against {} commits{}", 100.0 * r.verdict.change, r.verdict.pvalue,
+        c.failure = fmt::format("regressed {:+.2f} % ({}) against {} commits{}", 100.0 * r.verdict.change,
+                                r.verdict.pvalue < 0 ? std::string("by the thresholds") : fmt::format("p {:.2g}", r.verdict.pvalue),
                                 r.verdict.baseline_size, r.verdict.note.empty() ? "" : "; " + r.verdict.note);
         c.failure_type = "regression";
       }

@@ -2,6 +2,8 @@
 
 #include "harness/results/sample_statistics.h"
 
+#include <cmath>
+
 namespace shatter {
 
 bool normalize_by_calibration(std::vector<SeriesRun>& runs, const RunCalibrations& calibration) {
@@ -16,6 +18,9 @@ bool normalize_by_calibration(std::vector<SeriesRun>& runs, const RunCalibration
   }
   if (all.empty()) return false;
   const double reference = median_of(all);
+  // A calibration so small that the scale overflows (compare refuses it the same way).
+  for (double c : all)
+    if (!std::isfinite(reference / c)) return false;
   for (SeriesRun& run : runs) {
     const std::vector<double>& c = calibration.at(run.run_id);
     for (std::size_t k = 0; k < run.samples.size(); ++k) run.samples[k] *= reference / c[k];

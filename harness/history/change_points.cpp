@@ -36,8 +36,10 @@ SeriesChangePoint measure(std::span<const double> z, std::size_t lo, std::size_t
     cp.pvalue = difference == 0.0 ? 1.0 : 0.0;
     return cp;
   }
+  const double t = std::abs(difference / spread);
+  if (!std::isfinite(t)) return cp;  // values beyond what the statistics can hold: no evidence either way (p = 1)
   const boost::math::students_t student(df);
-  cp.pvalue = std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(student, std::abs(difference / spread))));
+  cp.pvalue = std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(student, t)));
   return cp;
 }
 

@@ -30,6 +30,9 @@ Result<std::string> git(const std::filesystem::path& repo, std::vector<std::stri
 Result<CommitInfo> resolve_commit(const std::filesystem::path& repo, const std::string& revision, const std::string& branch) {
   const std::string what = "commit " + revision;
   if (revision.empty()) return Error{"commit: empty revision"};
+  std::error_code ec;
+  if (!repo.empty() && !std::filesystem::is_directory(repo, ec))
+    return Error{what + ": no folder " + repo.string() + " (--repo names the git repository)"};
   Result<std::string> sha = git(repo, {"rev-parse", "--verify", "--quiet", "--end-of-options", revision + "^{commit}"}, what);
   if (!sha) {
     // rev-parse --quiet says nothing for an unknown revision: say it here.
@@ -48,12 +51,18 @@ Result<CommitInfo> resolve_commit(const std::filesystem::path& repo, const std::
   std::istringstream words(parents);
   for (std::string p; words >> p;) info.parents.push_back(p);
   info.time = std::strtoll(time.c_str(), nullptr, 10);
+  // Ancestors counted: a commit has more than each of its parents, so commits of one second keep the
+  // order of the history.
+  Result<std::string> count = git(repo, {"rev-list", "--count", info.sha}, what);
+  if (!count) return count.error();
+  info.generation = std::strtoll(count->c_str(), nullptr, 10);
 
   Result<std::string> head = git(repo, {"rev-parse", "--verify", "--quiet", "HEAD"}, what);
   const bool at_head = head && trim(*head) == info.sha;
   info.branch = branch;
   if (at_head) {
-    Result<std::string> status = git(repo, {"status", "--porcelain", "--untracked-files=no"}, what);
+    Result<std::string> status =
+        git(repo, {"--no-optional-locks", "-c", "core.fsmonitor=false", "status", "--porcelain", "--untracked-files=no"}, what);
     info.dirty = status && !trim(*status).empty();
     if (info.branch.empty()) {
       Result<std::string> name = git(repo, {"symbolic-ref", "--short", "-q", "HEAD"}, what);

@@ -45,6 +45,7 @@ double prediction_pvalue(double value, std::span<const double> baseline) {
   const double sd = std::sqrt(ss / static_cast<double>(n - 1));
   if (!(sd > 0.0)) return value == mean ? 1.0 : 0.0;
   const double t = (value - mean) / (sd * std::sqrt(1.0 + 1.0 / static_cast<double>(n)));
+  if (!std::isfinite(t)) return 1.0;  // beyond what the statistics can hold: no evidence
   const boost::math::students_t student(static_cast<double>(n - 1));
   return std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(student, std::abs(t))));
 }
@@ -58,6 +59,7 @@ double robust_prediction_pvalue(double value, std::span<const double> baseline) 
   const double scale = 1.4826 * median_of(deviations);
   if (!(scale > 0.0)) return value == center ? 1.0 : 0.0;
   const double t = (value - center) / (scale * std::sqrt(1.0 + 1.0 / static_cast<double>(n)));
+  if (!std::isfinite(t)) return 1.0;
   const boost::math::students_t student(static_cast<double>(n - 1));
   return std::min(1.0, 2.0 * boost::math::cdf(boost::math::complement(student, std::abs(t))));
 }
@@ -110,7 +112,7 @@ SeriesVerdict judge_newest(const std::vector<CommitPoint>& points, std::size_t f
     most_samples = std::max(most_samples, judged[i].samples.size());
   }
   v.base_median = median_of(base_medians);
-  v.change = v.base_median != 0.0 ? v.new_median / v.base_median - 1.0 : 0.0;
+  v.change = v.base_median != 0.0 ? (v.new_median - v.base_median) / std::abs(v.base_median) : 0.0;
   const double absolute = std::abs(v.new_median - v.base_median);
   const double floor = unit == "ms" ? settings.min_change_ms : settings.min_change_other;
   bool significant = true;

@@ -59,7 +59,7 @@ struct SeriesVerdict {
   GateVerdict verdict = GateVerdict::same;
   double base_median = 0.0;        ///< median of the baseline's commit medians
   double new_median = 0.0;         ///< median of the newest commit's samples
-  double change = 0.0;             ///< new / base - 1 (0 when base is 0)
+  double change = 0.0;             ///< (new - base) / |base| (0 when base is 0)
   double pvalue = -1.0;            ///< the test's; < 0 when not tested (too few samples)
   std::size_t baseline_first = 0;  ///< index of the baseline's first commit in the points
   std::size_t baseline_size = 0;   ///< commits in the baseline

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string_view>
+#include <unordered_map>
 
 namespace shatter {
 namespace {
@@ -35,16 +36,32 @@ Better figure_direction(std::string_view name, std::string_view unit) {
   return Better::none;
 }
 
+/// Largest magnitude a stored value may have: the analysis's sums of squares stay finite below it.
+constexpr double kMaxStoredMagnitude = 1e150;
+
 struct Builder {
   RunRecord& run;
   std::string case_name;  ///< the series' case: the run's, or an accuracy point's case, or a table row's mesh
+  std::string error;      ///< the first value out of range, named by its series
+  std::unordered_map<std::int64_t, std::size_t> index;  ///< series id -> its measurement
   void add(const std::string& subject, const std::string& what, const std::string& metric, const std::string& unit,
            Better better, std::vector<double> samples) {
     if (samples.empty()) return;
     for (double v : samples)
       if (!std::isfinite(v)) return;  // a figure a run could not measure is left out, never stored as NaN
-    run.measurements.push_back(
-        Measurement{SeriesKey{run.kind, case_name, run.fingerprint, subject, what, metric, unit, better}, std::move(samples)});
+    for (double v : samples)
+      if (std::abs(v) > kMaxStoredMagnitude && error.empty())
+        error = fmt::format("{} {} {} {}: {:g} is out of range (magnitude at most {:g})", case_name, subject, what, metric,
+                            v, kMaxStoredMagnitude);
+    SeriesKey key{run.kind, case_name, run.fingerprint, subject, what, metric, unit, better};
+    // One series twice in a file (a table with a count given twice): more samples of it.
+    const auto [at, fresh] = index.emplace(series_id(key), run.measurements.size());
+    if (!fresh) {
+      std::vector<double>& kept = run.measurements[at->second].samples;
+      kept.insert(kept.end(), samples.begin(), samples.end());
+      return;
+    }
+    run.measurements.push_back(Measurement{std::move(key), std::move(samples)});
   }
 };
 
@@ -164,6 +181,7 @@ void add_table_series(const Json& j, Builder& b) {
     const Json& requested = at(r, "fragments", path);
     if (!requested.is_number_integer()) throw BadKey(path + ".fragments: expected an integer");
     b.case_name = text_at(r, "mesh", path);
+    if (!r.contains("samples_ms")) continue;  // a row the fracturer refused or failed: nothing measured
     const std::string subject = fmt::format("{} {} fragments", text_at(r, "algorithm", path), requested.get<std::int64_t>());
     b.add(subject, "fracture", "time_ms", "ms", Better::lower, numbers_at(r, "samples_ms", path));
     add_figures(r.value("figures", Json::object()), subject, "fracture", b);
@@ -183,7 +201,7 @@ Result<RunRecord> run_from_results_text(const std::string& text, const std::stri
   const std::string kind = j.is_object() ? j.value("kind", std::string{}) : std::string{};
   if (!grid && kind != "accuracy" && kind != "table")
     return Error{source + ": not a shatterbench results file (a grid's has `cells`, an accuracy or table file its `kind`)"};
-  Builder b{run, {}};
+  Builder b{run, {}, {}, {}};
   if (grid) {
     Result<StoredGrid> g = grid_results_from_json(j, source);
     if (!g) return g.error();
@@ -198,6 +216,12 @@ Result<RunRecord> run_from_results_text(const std::string& text, const std::stri
     for (const char* key : {"metric", "budget_ms", "latency_budget_ms", "repetitions", "frames", "no_skip", "same_seed", "threads"})
       if (j.contains(key)) settings[key] = j[key];
     run.settings_json = settings.dump();
+    // Runs that compare refuses to mix (another case, frame count, threads, seeds, budget) are other
+    // series: the build's fingerprint and a hash of the case and settings, repetitions left out
+    // (more repetitions are more samples of the same series).
+    nlohmann::json setup = settings;
+    setup.erase("repetitions");
+    run.fingerprint += "-" + content_id(setup.dump()).substr(0, 8);
     run.passed = g->grid.passed();
     add_grid_series(*g, b);
   } else {
@@ -212,6 +236,7 @@ Result<RunRecord> run_from_results_text(const std::string& text, const std::stri
       for (const char* key : {"repetitions", "cases", "meshes"})
         if (j.contains(key)) settings[key] = j[key];
       run.settings_json = settings.dump();
+      if (j.contains("passed") && !j["passed"].is_boolean()) throw BadKey("passed: expected true or false");
       run.passed = j.value("passed", true);
       if (kind == "accuracy") {
         run.case_name = "accuracy";
@@ -226,6 +251,7 @@ Result<RunRecord> run_from_results_text(const std::string& text, const std::stri
       return Error{source + ": " + e.what()};
     }
   }
+  if (!b.error.empty()) return Error{source + ": " + b.error};
   if (run.fingerprint.empty()) return Error{source + ": context.fingerprint: empty (the run cannot be put in a series)"};
   if (run.measurements.empty()) return Error{source + ": the results hold no measurement (every cell failed?)"};
   return run;

@@ -3,13 +3,14 @@
 #include "harness/results/sample_statistics.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace shatter {
 
 std::vector<CommitPoint> commit_points(const std::vector<SeriesRun>& runs) {
   std::vector<CommitPoint> points;
   for (const SeriesRun& run : runs) {
-    if (points.empty() || points.back().commit != run.commit) points.push_back(CommitPoint{run.commit, run.commit_time, run.branch, {}, 0.0, true});
+    if (points.empty() || points.back().commit != run.commit) points.push_back(CommitPoint{run.commit, run.commit_time, run.branch, {}, 0.0, true, run.generation});
     CommitPoint& p = points.back();
     p.samples.insert(p.samples.end(), run.samples.begin(), run.samples.end());
     p.passed = p.passed && run.passed;
@@ -49,7 +50,7 @@ std::vector<SeriesChange> series_changes(const std::vector<CommitPoint>& points,
     c.commit = points[at].commit;
     c.median_before = median_of(std::span<const double>(medians).subspan(begin, at - begin));
     c.median_after = median_of(std::span<const double>(medians).subspan(at, end - at));
-    c.change = c.median_before != 0.0 ? c.median_after / c.median_before - 1.0 : 0.0;
+    c.change = c.median_before != 0.0 ? (c.median_after - c.median_before) / std::abs(c.median_before) : 0.0;
     c.pvalue = found[i].pvalue;
     c.kind = classify_change(c.change, better);
     out.push_back(c);

@@ -21,6 +21,7 @@ struct CommitPoint {
   std::vector<double> samples;   ///< every sample of every run at the commit
   double median = 0.0;           ///< of the samples
   bool passed = true;            ///< every run at the commit passed its own checks
+  std::int64_t generation = 0;   ///< of the commit (orders commits of one second)
 };
 
 /// `runs` (in commit order, as HistoryStore::series_runs returns them) pooled per commit.
@@ -42,7 +43,7 @@ struct SeriesChange {
   std::string commit;           ///< its sha
   double median_before = 0.0;   ///< median of the commit medians of the segment before (back to the previous change point)
   double median_after = 0.0;    ///< and of the segment from it (to the next)
-  double change = 0.0;          ///< median_after / median_before - 1 (0 when median_before is 0)
+  double change = 0.0;          ///< (median_after - median_before) / |median_before| (0 when median_before is 0)
   double pvalue = 1.0;          ///< of the t-test (find_change_points)
   ChangeKind kind = ChangeKind::neutral;
 };

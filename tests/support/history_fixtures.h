@@ -100,14 +100,15 @@ inline std::string git_in(const std::filesystem::path& repo, std::vector<std::st
   return out;
 }
 
-/// A git repository in `dir` with `count` empty commits, one a day from 2026-01-01; their shas in order.
-inline std::vector<std::string> make_commits(const std::filesystem::path& dir, int count) {
+/// A git repository in `dir` with `count` empty commits, one a day from 2026-01-01 (or all in one
+/// second when `one_second`, as a rebased stack is); their shas in order.
+inline std::vector<std::string> make_commits(const std::filesystem::path& dir, int count, bool one_second = false) {
   std::filesystem::create_directories(dir);
   git_in(dir, {"init", "-q", "-b", "main"});
   std::vector<std::string> shas;
   for (int i = 0; i < count; ++i) {
     // The committer time orders the history; git reads it from the environment only.
-    const std::string when = std::to_string(1767225600 + 86400LL * i) + " +0000";
+    const std::string when = std::to_string(1767225600 + (one_second ? 0 : 86400LL * i)) + " +0000";
     ::setenv("GIT_COMMITTER_DATE", when.c_str(), 1);
     git_in(dir, {"-c", "user.name=t", "-c", "user.email=t@example.org", "commit", "-q", "--allow-empty",
                  "--date=" + when, "-m", "c" + std::to_string(i)});

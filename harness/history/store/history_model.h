@@ -24,6 +24,7 @@ struct CommitInfo {
   std::string branch;                ///< branch the run was made on ("" unknown)
   bool dirty = false;                ///< the working tree had changes to tracked files
   std::int64_t time = 0;             ///< committer time, s since 1970 (orders the history)
+  std::int64_t generation = 0;       ///< commits that are ancestors of it (orders commits of one second)
 };
 
 /// What a series is. Its id is a hash of every field but unit and better (series_id()).
@@ -73,9 +74,11 @@ struct SeriesRun {
   std::string run_id;
   std::string commit;         ///< sha
   std::int64_t commit_time = 0;
-  std::string branch;         ///< the commit's branch as first recorded
+  std::string branch;         ///< the branch the run was recorded on
   bool passed = true;         ///< the run's verdict
   std::vector<double> samples;
+  std::int64_t generation = 0;  ///< of the commit (CommitInfo::generation)
+  bool dirty = false;           ///< the run was made from a working tree with changes
 };
 
 /// A run as listed at its commit.
@@ -89,10 +92,12 @@ struct RunSummary {
 
 /// An acknowledged change: the gate judges the series from `commit` on.
 struct Acknowledgement {
-  std::int64_t series_id = 0;
-  std::string commit;
-  std::string note;
-  std::string created;        ///< UTC ISO 8601
+  std::int64_t series_id = 0;  ///< the series acknowledged
+  std::string commit;          ///< the commit from which the gate judges it (sha)
+  std::string note;            ///< why
+  std::string created;         ///< UTC ISO 8601
+  std::int64_t commit_time = 0;  ///< of the commit (read back; orders it among the series' points)
+  std::int64_t generation = 0;   ///< of the commit (read back)
 };
 
 }  // namespace shatter

@@ -35,6 +35,14 @@ const std::vector<Migration>& migrations() {
        {"CREATE TABLE sb_acknowledgements (series_id BIGINT NOT NULL REFERENCES sb_series(id), "
         "commit_sha TEXT NOT NULL REFERENCES sb_commits(sha), note TEXT NOT NULL, created_at TEXT NOT NULL, "
         "PRIMARY KEY (series_id, commit_sha))"}},
+      // Commits of one second ordered by ancestry; branch and dirty flag per run (a commit is
+      // recorded from several branches and trees).
+      {3,
+       {"ALTER TABLE sb_commits ADD COLUMN generation BIGINT NOT NULL DEFAULT 0",
+        "ALTER TABLE sb_runs ADD COLUMN branch TEXT NOT NULL DEFAULT ''",
+        "ALTER TABLE sb_runs ADD COLUMN dirty BIGINT NOT NULL DEFAULT 0",
+        "UPDATE sb_runs SET branch = (SELECT c.branch FROM sb_commits c WHERE c.sha = sb_runs.commit_sha), "
+        "dirty = (SELECT c.dirty FROM sb_commits c WHERE c.sha = sb_runs.commit_sha)"}},
   };
   return all;
 }

@@ -8,7 +8,7 @@
 namespace shatter {
 
 /// The version this binary writes.
-inline constexpr int kHistorySchemaVersion = 2;
+inline constexpr int kHistorySchemaVersion = 3;
 
 /// The schema version of `db` (0: no store yet).
 Result<int> history_schema_version(SqlConnection& db);

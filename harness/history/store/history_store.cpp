@@ -3,6 +3,7 @@
 #include "harness/history/store/history_schema.h"
 #include "harness/history/store/postgres_connection.h"
 #include "harness/history/store/sqlite_connection.h"
+#include "harness/results/sample_statistics.h"
 
 #include <fmt/chrono.h>
 #include <fmt/core.h>
@@ -42,13 +43,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
     from = to + 1;
   }
   return out;
-}
-
-double median_of(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
 Better better_from(const std::string& name) {
@@ -161,6 +155,12 @@ Result<HistoryStore> HistoryStore::open(const std::string& location, const Store
       is_postgres_url(location) ? open_postgres(location)
                                 : open_sqlite(location, SqliteOpenOptions{options.create, options.lock_timeout_s});
   if (!db) return db.error();
+  // Commands that only read never make a store: an empty file or database is not one.
+  if (!options.create) {
+    Result<int> version = history_schema_version(**db);
+    if (!version) return version.error();
+    if (*version == 0) return Error{(*db)->name() + ": no history store here (record a run first: shatterbench history record)"};
+  }
   if (Status s = migrate_history_schema(**db); !s) return s.error();
   return HistoryStore(std::move(*db));
 }
@@ -178,22 +178,40 @@ Result<std::int64_t> HistoryStore::run_count() {
 }
 
 Result<bool> HistoryStore::record(const RunRecord& run) {
+  Result<std::vector<bool>> added = record_all({run});
+  if (!added) return added.error();
+  return static_cast<bool>(added->front());
+}
+
+Result<std::vector<bool>> HistoryStore::record_all(const std::vector<RunRecord>& runs) {
   WriteTransaction tx(*db_);
   if (!tx.started()) return tx.started().error();
+  std::vector<bool> added;
+  for (const RunRecord& run : runs) {
+    Result<bool> one = insert_run(run);
+    if (!one) return one.error();  // the transaction rolls back: none of the runs is recorded
+    added.push_back(*one);
+  }
+  if (Status s = tx.commit(); !s) return s.error();
+  return added;
+}
+
+Result<bool> HistoryStore::insert_run(const RunRecord& run) {
   const CommitInfo& c = run.commit;
   Result<std::vector<SqlRow>> commit = db_->query(
-      "INSERT INTO sb_commits (sha, parents, branch, dirty, commit_time) VALUES (?, ?, ?, ?, ?) "
+      "INSERT INTO sb_commits (sha, parents, branch, dirty, commit_time, generation) VALUES (?, ?, ?, ?, ?, ?) "
       "ON CONFLICT (sha) DO NOTHING",
-      {c.sha, join(c.parents, ' '), c.branch, std::int64_t{c.dirty ? 1 : 0}, c.time});
+      {c.sha, join(c.parents, ' '), c.branch, std::int64_t{c.dirty ? 1 : 0}, c.time, c.generation});
   if (!commit) return commit.error();
   // The run's row decides: a second recorder of the same file (or a race of two) inserts nothing.
   Result<std::vector<SqlRow>> inserted = db_->query(
       "INSERT INTO sb_runs (id, commit_sha, kind, case_name, fingerprint, machine, source, context, settings, "
-      "passed, recorded_at) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING RETURNING id",
+      "passed, recorded_at, branch, dirty) VALUES (?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?, ?) ON CONFLICT (id) DO NOTHING "
+      "RETURNING id",
       {run.id, c.sha, run.kind, run.case_name, run.fingerprint, run.machine, run.source, run.context_json,
-       run.settings_json, std::int64_t{run.passed ? 1 : 0}, now_utc()});
+       run.settings_json, std::int64_t{run.passed ? 1 : 0}, now_utc(), c.branch, std::int64_t{c.dirty ? 1 : 0}});
   if (!inserted) return inserted.error();
-  if (inserted->empty()) return false;  // the transaction rolls back: nothing changed
+  if (inserted->empty()) return false;  // already recorded: nothing more of it is written
 
   std::vector<SqlValue> series, measurements;
   series.reserve(run.measurements.size() * 9);
@@ -216,15 +234,18 @@ Result<bool> HistoryStore::record(const RunRecord& run) {
                              measurements);
       !s)
     return s.error();
-  if (Status s = tx.commit(); !s) return s.error();
   return true;
 }
 
 Result<std::vector<SeriesInfo>> HistoryStore::list_series(const SeriesFilter& filter) {
   std::vector<SqlValue> params;
-  const std::string sql = fmt::format("SELECT {} FROM sb_series s WHERE {} ORDER BY kind, case_name, subject, what, metric, id",
+  const std::string sql = fmt::format("SELECT {} FROM sb_series s WHERE {} ORDER BY {}",
                                       "s.id, s.kind, s.case_name, s.fingerprint, s.subject, s.what, s.metric, s.unit, s.better",
-                                      series_where(*db_, filter, params));
+                                      series_where(*db_, filter, params),
+                                      // Byte order on both backends, whatever the server's collation.
+                                      db_->dialect() == "sqlite" ? "kind, case_name, subject, what, metric, id"
+                                                                 : "kind COLLATE \"C\", case_name COLLATE \"C\", subject COLLATE "
+                                                                   "\"C\", what COLLATE \"C\", metric COLLATE \"C\", id");
   std::vector<SeriesInfo> out;
   Status s = db_->for_each_row(sql, params, [&out](const SqlRow& r) {
     out.push_back(series_from_row(r));
@@ -237,14 +258,14 @@ Result<std::vector<SeriesInfo>> HistoryStore::list_series(const SeriesFilter& fi
 Result<std::vector<SeriesRun>> HistoryStore::series_runs(std::int64_t series, std::int64_t since_time) {
   std::vector<SeriesRun> out;
   Status s = db_->for_each_row(
-      "SELECT m.run_id, r.commit_sha, c.commit_time, c.branch, r.passed, m.samples FROM sb_measurements m "
-      "JOIN sb_runs r ON r.id = m.run_id JOIN sb_commits c ON c.sha = r.commit_sha "
-      "WHERE m.series_id = ? AND c.commit_time >= ? ORDER BY c.commit_time, c.sha, r.recorded_at, m.run_id",
+      "SELECT m.run_id, r.commit_sha, c.commit_time, r.branch, r.passed, m.samples, c.generation, r.dirty "
+      "FROM sb_measurements m JOIN sb_runs r ON r.id = m.run_id JOIN sb_commits c ON c.sha = r.commit_sha "
+      "WHERE m.series_id = ? AND c.commit_time >= ? ORDER BY c.commit_time, c.generation, c.sha, r.recorded_at, m.run_id",
       {series, since_time}, [&](const SqlRow& r) -> Status {
         Result<std::vector<double>> samples = samples_from_blob(sql_blob(r[5]));
         if (!samples) return Error{fmt::format("{}: run {}: {}", name(), sql_text(r[0]), samples.error().message)};
         out.push_back(SeriesRun{sql_text(r[0]), sql_text(r[1]), sql_int(r[2]), sql_text(r[3]), sql_int(r[4]) != 0,
-                                std::move(*samples)});
+                                std::move(*samples), sql_int(r[6]), sql_int(r[7]) != 0});
         return {};
       });
   if (!s) return s.error();
@@ -262,17 +283,20 @@ Status HistoryStore::visit_series_runs(const SeriesFilter& filter, std::int64_t 
     std::int64_t time;
     std::string branch;
     bool passed;
+    std::int64_t generation;
+    bool dirty;
   };
   std::vector<std::string> run_ids;
   std::vector<RunOrder> runs;
   std::unordered_map<std::string, std::size_t> position;
   Status listed = db_->for_each_row(
-      "SELECT r.id, r.commit_sha, c.commit_time, c.branch, r.passed FROM sb_runs r JOIN sb_commits c ON c.sha = r.commit_sha "
-      "WHERE c.commit_time >= ? ORDER BY c.commit_time, c.sha, r.recorded_at, r.id",
+      "SELECT r.id, r.commit_sha, c.commit_time, r.branch, r.passed, c.generation, r.dirty FROM sb_runs r "
+      "JOIN sb_commits c ON c.sha = r.commit_sha WHERE c.commit_time >= ? "
+      "ORDER BY c.commit_time, c.generation, c.sha, r.recorded_at, r.id",
       {since_time}, [&](const SqlRow& r) {
         position.emplace(sql_text(r[0]), runs.size());
         run_ids.push_back(sql_text(r[0]));
-        runs.push_back({sql_text(r[1]), sql_int(r[2]), sql_text(r[3]), sql_int(r[4]) != 0});
+        runs.push_back({sql_text(r[1]), sql_int(r[2]), sql_text(r[3]), sql_int(r[4]) != 0, sql_int(r[5]), sql_int(r[6]) != 0});
         return Status{};
       });
   if (!listed) return listed;
@@ -283,7 +307,7 @@ Status HistoryStore::visit_series_runs(const SeriesFilter& filter, std::int64_t 
     Result<std::vector<double>> samples = samples_from_blob(blob);
     if (!samples) return Error{fmt::format("{}: run {}: {}", name(), run_ids[at], samples.error().message)};
     const RunOrder& o = runs[at];
-    return SeriesRun{run_ids[at], o.commit, o.time, o.branch, o.passed, std::move(*samples)};
+    return SeriesRun{run_ids[at], o.commit, o.time, o.branch, o.passed, std::move(*samples), o.generation, o.dirty};
   };
   if (runs.size() * 4 <= static_cast<std::size_t>(*total)) {
     // A recent window: every measurement of each run in range, by the primary key.
@@ -346,13 +370,14 @@ Result<std::optional<CommitInfo>> HistoryStore::find_commit(const std::string& p
   std::string lower = prefix;
   for (char& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   Result<std::vector<SqlRow>> rows = db_->query(
-      "SELECT sha, parents, branch, dirty, commit_time FROM sb_commits WHERE sha LIKE ? LIMIT 2", {lower + "%"});
+      "SELECT sha, parents, branch, dirty, commit_time, generation FROM sb_commits WHERE sha LIKE ? LIMIT 2",
+      {lower + "%"});
   if (!rows) return rows.error();
   if (rows->empty()) return std::optional<CommitInfo>{};
   if (rows->size() > 1) return Error{fmt::format("{}: commit {} is ambiguous: give more digits", name(), prefix)};
   const SqlRow& r = rows->front();
   return std::optional<CommitInfo>{
-      CommitInfo{sql_text(r[0]), split(sql_text(r[1]), ' '), sql_text(r[2]), sql_int(r[3]) != 0, sql_int(r[4])}};
+      CommitInfo{sql_text(r[0]), split(sql_text(r[1]), ' '), sql_text(r[2]), sql_int(r[3]) != 0, sql_int(r[4]), sql_int(r[5])}};
 }
 
 Result<std::vector<RunSummary>> HistoryStore::runs_at(const std::string& sha) {
@@ -368,7 +393,7 @@ Result<std::vector<RunSummary>> HistoryStore::runs_at(const std::string& sha) {
 Result<std::optional<std::int64_t>> HistoryStore::recent_commit_time(const std::string& case_name, int back) {
   Result<std::vector<SqlRow>> rows = db_->query(
       "SELECT c.commit_time FROM sb_commits c WHERE EXISTS (SELECT 1 FROM sb_runs r WHERE r.commit_sha = c.sha "
-      "AND (? = '' OR r.case_name = ?)) ORDER BY c.commit_time DESC, c.sha DESC LIMIT 1 OFFSET ?",
+      "AND (? = '' OR r.case_name = ?)) ORDER BY c.commit_time DESC, c.generation DESC, c.sha DESC LIMIT 1 OFFSET ?",
       {case_name, case_name, std::int64_t{back}});
   if (!rows) return rows.error();
   if (rows->empty()) return std::optional<std::int64_t>{};
@@ -387,13 +412,23 @@ Status HistoryStore::acknowledge(const Acknowledgement& ack) {
 }
 
 Result<std::vector<Acknowledgement>> HistoryStore::acknowledgements(std::int64_t series) {
+  Result<std::vector<Acknowledgement>> all = all_acknowledgements();
+  if (!all) return all.error();
+  std::vector<Acknowledgement> out;
+  for (Acknowledgement& a : *all)
+    if (a.series_id == series) out.push_back(std::move(a));
+  return out;
+}
+
+Result<std::vector<Acknowledgement>> HistoryStore::all_acknowledgements() {
   Result<std::vector<SqlRow>> rows = db_->query(
-      "SELECT a.series_id, a.commit_sha, a.note, a.created_at FROM sb_acknowledgements a "
-      "JOIN sb_commits c ON c.sha = a.commit_sha WHERE a.series_id = ? ORDER BY c.commit_time, c.sha",
-      {series});
+      "SELECT a.series_id, a.commit_sha, a.note, a.created_at, c.commit_time, c.generation FROM sb_acknowledgements a "
+      "JOIN sb_commits c ON c.sha = a.commit_sha ORDER BY a.series_id, c.commit_time, c.generation, c.sha",
+      {});
   if (!rows) return rows.error();
   std::vector<Acknowledgement> out;
-  for (const SqlRow& r : *rows) out.push_back({sql_int(r[0]), sql_text(r[1]), sql_text(r[2]), sql_text(r[3])});
+  for (const SqlRow& r : *rows)
+    out.push_back({sql_int(r[0]), sql_text(r[1]), sql_text(r[2]), sql_text(r[3]), sql_int(r[4]), sql_int(r[5])});
   return out;
 }
 

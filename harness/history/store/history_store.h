@@ -57,6 +57,9 @@ class HistoryStore {
 
   /// Records `run` whole, in one transaction. False when a run of its id is already there.
   Result<bool> record(const RunRecord& run);
+  /// Records every run of `runs` in one transaction (all or none); per run, false when it was
+  /// already there.
+  Result<std::vector<bool>> record_all(const std::vector<RunRecord>& runs);
   /// True when a run of `id` is recorded.
   Result<bool> has_run(const std::string& id);
   /// How many runs the store holds.
@@ -91,8 +94,13 @@ class HistoryStore {
   Status acknowledge(const Acknowledgement& ack);
   /// The acknowledgements of `series`, latest commit last.
   Result<std::vector<Acknowledgement>> acknowledgements(std::int64_t series);
+  /// Every acknowledgement of the store, by series, latest commit last in each.
+  Result<std::vector<Acknowledgement>> all_acknowledgements();
 
  private:
+  /// Writes `run` inside the open transaction; false when its id is already there.
+  Result<bool> insert_run(const RunRecord& run);
+
   std::unique_ptr<SqlConnection> db_;
 };
 

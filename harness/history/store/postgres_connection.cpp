@@ -162,7 +162,27 @@ bool is_postgres_url(std::string_view store) {
   return store.starts_with("postgresql://") || store.starts_with("postgres://");
 }
 
+/// `text` with every occurrence of `secret` (a password) replaced.
+static std::string without(std::string text, const std::string& secret) {
+  if (secret.empty()) return text;
+  for (std::size_t at = text.find(secret); at != std::string::npos; at = text.find(secret, at))
+    text.replace(at, secret.size(), "***");
+  return text;
+}
+
 Result<std::unique_ptr<SqlConnection>> open_postgres(const std::string& url) {
+  // The URL is parsed first, so that a malformed one gets a fixed message: libpq's would quote the
+  // URL, password included.
+  char* parse_error = nullptr;
+  PQconninfoOption* parsed = PQconninfoParse(url.c_str(), &parse_error);
+  if (parsed == nullptr) {
+    if (parse_error != nullptr) PQfreemem(parse_error);
+    return Error{"postgresql URL: cannot be read (expected postgresql://user[:password]@host[:port]/database[?key=value])"};
+  }
+  std::string password;
+  for (PQconninfoOption* o = parsed; o->keyword != nullptr; ++o)
+    if (std::strcmp(o->keyword, "password") == 0 && o->val != nullptr) password = o->val;
+  PQconninfoFree(parsed);
   // Earlier keywords are overridden by what the URL sets (expand_dbname), so its own timeout wins.
   const char* keywords[] = {"connect_timeout", "application_name", "dbname", nullptr};
   const char* values[] = {"5", "shatterbench", url.c_str(), nullptr};
@@ -174,7 +194,7 @@ Result<std::unique_ptr<SqlConnection>> open_postgres(const std::string& url) {
     const char* port = PQport(conn);
     const char* db = PQdb(conn);
     std::string message = fmt::format("postgresql://{}:{}/{}: cannot connect: {}", host ? host : "?", port ? port : "?",
-                                      db ? db : "?", one_line(PQerrorMessage(conn)));
+                                      db ? db : "?", without(one_line(PQerrorMessage(conn)), password));
     PQfinish(conn);
     return Error{message};
   }

@@ -101,6 +101,9 @@ Result<std::unique_ptr<SqlConnection>> open_sqlite(const std::filesystem::path& 
   const auto status = std::filesystem::status(path, ec);
   if (std::filesystem::exists(status)) {
     if (!std::filesystem::is_regular_file(status)) return Error{name + ": not a regular file"};
+    // An empty file is no store; opening it would write SQLite's header into it.
+    if (!options.create && std::filesystem::file_size(path, ec) == 0 && !ec)
+      return Error{name + ": no history store here (record a run first: shatterbench history record)"};
   } else if (!options.create) {
     return Error{name + ": no history store here (record a run first: shatterbench history record)"};
   } else if (path.has_parent_path()) {

@@ -215,3 +215,93 @@ TEST_CASE("history gate --baseline-branch judges a pull request against its targ
   CHECK(main_only.exit_code == 0);
   CHECK(main_only.out.find("0 regressed, 0 improved and 0 failed run(s)") != std::string::npos);
 }
+
+TEST_CASE("history orders commits of one second by their ancestry", "[history][cli]") {
+  // A rebased stack: 14 commits in one second, the newest twice as slow.
+  const fs::path dir = history_scratch("cli_one_second");
+  const std::string db = (dir / "h.sqlite").string(), repo = (dir / "repo").string();
+  const std::vector<std::string> shas = make_commits(repo, 14, true);
+  for (std::size_t i = 0; i < shas.size(); ++i) {
+    const auto file = write_text(dir / ("r" + std::to_string(i) + ".json"),
+                                 synthetic_grid_text(i == 13 ? 2.0 : 1.0, 0.01, 500 + i, shas[i].substr(0, 12)));
+    REQUIRE(run_cli_argv({"history", "record", file.string(), "--db", db, "--repo", repo}).exit_code == 0);
+  }
+  const CliRun g = run_cli_argv({"history", "gate", "--commit", "HEAD", "--db", db, "--repo", repo});
+  INFO(g.out);
+  CHECK(g.exit_code == 1);
+  CHECK(g.out.find("**regressed**") != std::string::npos);
+}
+
+TEST_CASE("history ack at a commit the series did not measure judges it from the next one", "[history][cli]") {
+  const fs::path dir = history_scratch("cli_ack_unmeasured");
+  const std::string db = (dir / "h.sqlite").string(), repo = (dir / "repo").string();
+  const std::vector<std::string> shas = make_commits(repo, 16);
+  // Commits 0..12 measured at scale 1, commit 13 not measured, 14 and 15 at scale 1.5.
+  for (std::size_t i = 0; i < shas.size(); ++i) {
+    if (i == 13) continue;
+    const auto file = write_text(dir / ("r" + std::to_string(i) + ".json"),
+                                 synthetic_grid_text(i > 13 ? 1.5 : 1.0, 0.01, 700 + i, shas[i].substr(0, 12)));
+    REQUIRE(run_cli_argv({"history", "record", file.string(), "--db", db, "--repo", repo}).exit_code == 0);
+  }
+  CHECK(run_cli_argv({"history", "gate", "--commit", "HEAD", "--db", db, "--repo", repo}).exit_code == 1);
+  // Commit 13 is recorded by a run of another case only; the ack there still moves the baseline on.
+  const auto other = write_text(dir / "other.json", synthetic_grid_text(1.0, 0.01, 9, shas[13].substr(0, 12)));
+  std::string text = slurp(other);
+  text.replace(text.find("\"synthetic\""), 11, "\"elsewhere\"");
+  write_text(other, text);
+  REQUIRE(run_cli_argv({"history", "record", other.string(), "--db", db, "--repo", repo}).exit_code == 0);
+  REQUIRE(run_cli_argv({"history", "ack", "--commit", shas[13], "--db", db, "--case", "synthetic", "--note", "expected"})
+              .exit_code == 0);
+  const CliRun after = run_cli_argv({"history", "gate", "--commit", "HEAD", "--db", db, "--repo", repo, "--case", "synthetic"});
+  INFO(after.out);
+  CHECK(after.exit_code == 0);
+}
+
+TEST_CASE("history refuses values beyond range and keeps secrets out of messages", "[history][cli]") {
+  const fs::path dir = history_scratch("cli_hostile_values");
+  const std::string db = (dir / "h.sqlite").string(), repo = (dir / "repo").string();
+  const std::vector<std::string> shas = make_commits(repo, 1);
+  std::string text = synthetic_grid_text(1.0, 0.01, 1, shas[0].substr(0, 12));
+  // Every worst frame, the samples' included, at the edge of the doubles.
+  std::size_t replaced = 0;
+  for (std::size_t at = text.find("\"worst_frame_ms\""); at != std::string::npos; at = text.find("\"worst_frame_ms\"", at + 1)) {
+    const std::size_t colon = text.find(':', at), end = text.find_first_of(",\n}", colon);
+    text.replace(colon + 1, end - colon - 1, " 1.7e308");
+    ++replaced;
+  }
+  REQUIRE(replaced > 2);
+  const auto huge = write_text(dir / "huge.json", text);
+  const CliRun r = run_cli_argv({"history", "record", huge.string(), "--db", db, "--repo", repo});
+  INFO(r.err);
+  CHECK(r.exit_code == 2);
+  CHECK(r.err.find("out of range") != std::string::npos);
+  CHECK_FALSE(fs::exists(db));
+
+  for (const std::string url : {"postgresql://bob:s3cr%ZZet@127.0.0.1:1/db", "postgresql://bob:s3cret@[::1/db",
+                                "postgresql://bob:s3cret@127.0.0.1:1/db"}) {
+    const CliRun p = run_cli_argv({"history", "show", "--db", url});
+    INFO(p.err);
+    CHECK(p.exit_code == 2);
+    CHECK(line_count(p.err) == 1);
+    CHECK(p.err.find("s3cr") == std::string::npos);
+  }
+  // A read-only command on an empty file: no store there, and none made.
+  const auto empty = write_text(dir / "empty.sqlite", "");
+  const CliRun e = run_cli_argv({"history", "show", "--db", empty.string()});
+  CHECK(e.exit_code == 2);
+  CHECK(e.err.find("no history store here") != std::string::npos);
+  CHECK(fs::file_size(empty) == 0);
+}
+
+TEST_CASE("table --record keeps what ran: a refused row is left out and a repeated count pooled", "[history][cli]") {
+  const fs::path dir = history_scratch("cli_table_rows");
+  const std::string db = (dir / "h.sqlite").string();
+  const fs::path source = SHATTER_SOURCE_DIR;
+  // cgal-clip and plane-slice on the sphere, the count 5 twice: one series per fracturer, 4 samples each.
+  const CliRun t = run_cli_argv({"table", "--mesh", "data/meshes/sphere.off", "--algo", "plane-slice", "--fragments", "5",
+                                 "5", "--repetitions", "2", "--record", "--db", db}, source);
+  INFO(t.err);
+  REQUIRE(t.exit_code == 0);
+  const CliRun s = run_cli_argv({"history", "show", "--db", db, "--metric", "time_ms"});
+  CHECK(s.out.find("| 4 |") != std::string::npos);  // 2 repetitions x the count given twice
+}

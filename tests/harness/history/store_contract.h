@@ -88,8 +88,9 @@ inline void check_round_trip(const std::string& location) {
   CHECK(measurement_count(store) == static_cast<std::int64_t>(run.measurements.size()));
 }
 
-/// A store at schema version 1 (before acknowledgements) is brought forward with its runs kept; a
-/// store newer than this binary is refused with one line.
+/// A store at schema version 1 (as the first binary wrote it: no acknowledgements, no generation,
+/// branch per commit) is brought forward with its runs kept; a store newer than this binary is
+/// refused with one line.
 inline void check_migrations(const std::string& location) {
   {
     std::unique_ptr<SqlConnection> db = raw_connection(location);
@@ -97,11 +98,20 @@ inline void check_migrations(const std::string& location) {
     Result<int> v = history_schema_version(*db);
     REQUIRE(v);
     CHECK(*v == 1);
-    HistoryStore old(std::move(db));
-    REQUIRE(old.record(synthetic_run(1.0, 1, std::string(40, 'b'), 2000)));
+    // One run, written with version 1's columns.
+    const std::string sha(40, 'b');
+    REQUIRE(db->query("INSERT INTO sb_commits (sha, parents, branch, dirty, commit_time) VALUES (?, '', 'main', 0, 2000)", {sha}));
+    REQUIRE(db->query("INSERT INTO sb_runs (id, commit_sha, kind, case_name, fingerprint, machine, source, context, "
+                      "settings, passed, recorded_at) VALUES ('old-run', ?, 'grid', 'old', 'fp', 'm', 'old.json', '{}', "
+                      "'{}', 1, '2026-01-01T00:00:00Z')",
+                      {sha}));
+    REQUIRE(db->query("INSERT INTO sb_series (id, kind, case_name, fingerprint, subject, what, metric, unit, better) "
+                      "VALUES (7, 'grid', 'old', 'fp', 'cell', 'worst frame', 'cpu_ms', 'ms', 'lower')"));
+    REQUIRE(db->query("INSERT INTO sb_measurements (run_id, series_id, median, samples) VALUES ('old-run', 7, 2.0, ?)",
+                      {SqlBlob{samples_blob({1.0, 2.0, 3.0})}}));
     // Version 1 has no acknowledgements.
-    CHECK_FALSE(old.acknowledge({series_id(synthetic_run(1.0, 1, std::string(40, 'b'), 2000).measurements[0].series),
-                                 std::string(40, 'b'), "n", {}}));
+    HistoryStore old(std::move(db));
+    CHECK_FALSE(old.acknowledge({7, sha, "n", {}}));
   }
   {
     HistoryStore store = open_or_fail(location);
@@ -109,11 +119,18 @@ inline void check_migrations(const std::string& location) {
     REQUIRE(v);
     CHECK(*v == kHistorySchemaVersion);
     CHECK(run_count(store) == 1);
-    const RunRecord run = synthetic_run(1.0, 1, std::string(40, 'b'), 2000);
-    CHECK(store.acknowledge({series_id(run.measurements[0].series), run.commit.sha, "expected", {}}));
-    Result<std::vector<Acknowledgement>> acks = store.acknowledgements(series_id(run.measurements[0].series));
+    Result<std::vector<SeriesRun>> runs = store.series_runs(7);
+    REQUIRE(runs);
+    REQUIRE(runs->size() == 1);
+    CHECK(runs->front().samples == std::vector<double>{1.0, 2.0, 3.0});
+    CHECK(runs->front().branch == "main");  // version 3 keeps the branch per run, taken from the commit
+    CHECK(store.acknowledge({7, std::string(40, 'b'), "expected", {}}));
+    Result<std::vector<Acknowledgement>> acks = store.acknowledgements(7);
     REQUIRE(acks);
     CHECK(acks->size() == 1);
+    // New runs go in beside the old one.
+    REQUIRE(store.record(synthetic_run(1.0, 1, std::string(40, 'c'), 3000)));
+    CHECK(run_count(store) == 2);
     REQUIRE(store.connection().query("UPDATE sb_schema SET version = 99"));
   }
   Result<HistoryStore> newer = HistoryStore::open(location, StoreOptions{true, 1.0});
