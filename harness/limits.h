@@ -26,9 +26,18 @@ inline constexpr int kMaxRepetitions = 1'000;
 /// flags): 200 times the default 10 x 5 grid, a 100 x 100 sweep.
 inline constexpr std::int64_t kMaxGridCells = 10'000;
 
-/// Frames a grid records: cells (of this shard) x repetitions x frames. The results keep every one:
-/// 160 MB of doubles in memory and about 400 MB of JSON at the limit.
-inline constexpr std::int64_t kMaxRecordedFrames = 20'000'000;
+/// Frames a grid records: cells (of this shard) x repetitions x frames. The results keep every one,
+/// with its stage times: 8 bytes a frame and 8 per stage that ran inside frames (56 with the building
+/// case's 6), about 450 MB in memory and 51 bytes a frame, about 410 MB, of JSON at the limit
+/// (docs/limits.md says how it was measured).
+inline constexpr std::int64_t kMaxRecordedFrames = 8'000'000;
+
+/// Poses a grid records with `--record-frames` (harness/results/recorded_frames.h): the bodies of each
+/// recorded run times its frames, summed over the recorded cells. A pose is 20 bytes in the sidecar
+/// file and about 40 in memory while the run records: 40 MB and 80 MB at the limit, over 13 times a
+/// scene of 500 bodies over 300 frames. Checked after each frame, as bodies appear; the run stops at
+/// the first frame past it.
+inline constexpr std::int64_t kMaxRecordedPoses = 2'000'000;
 
 /// Runtime pieces one run can make: pre-fracture count x runtime count of a cell (every fragment
 /// hit). Each piece is a mesh, a convex hull and a rigid body, a few KB: about 5 GB at the limit.
@@ -48,7 +57,7 @@ inline constexpr std::size_t kMaxCaseNameBytes = 200;
 
 /// Size of a results file read by compare, merge and report (grid and accuracy JSON), and of an
 /// instruction dump read back from valgrind: the reader holds the text and its JSON tree (about ten
-/// times the text). A grid at kMaxRecordedFrames writes about 400 MB of JSON; a file past 1 GiB is
+/// times the text). A grid at kMaxRecordedFrames writes about 410 MB of JSON; a file past 1 GiB is
 /// not one this tool wrote (a link to /dev/zero, a wrong file) and is refused before it is held.
 inline constexpr std::uint64_t kMaxResultsFileBytes = 1ULL << 30;
 

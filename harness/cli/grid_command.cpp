@@ -12,6 +12,7 @@
 #include "harness/results/grid_reader.h"
 #include "harness/results/grid_reporter.h"
 #include "harness/results/input_solid_json.h"
+#include "harness/results/recorded_frames.h"
 #include "harness/results/run_context.h"
 #include "harness/pipeline/instruction_marks.h"
 
@@ -66,6 +67,7 @@ struct GridCommandOptions {
   std::optional<double> timeout_s;
   bool no_repair = false;
   double cap_uv_scale = 0.0;  // 0: the case's
+  bool record_frames = false;
 };
 
 /// "K/N" -> (K, N); false when malformed.
@@ -225,6 +227,14 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
           "one process, without a time limit)");
     options.cell_timeout_s = *o.timeout_s;
   }
+  options.record_frames = o.record_frames;
+  if (o.record_frames) {
+    if (o.update_baseline) return fail_input("--record-frames: not with --update-baseline (a baseline holds no recording)");
+    if (o.json.empty())
+      return fail_input("--record-frames: needs --json OUT (the recording is written beside it, OUT.frames.bin)");
+    if (o.metric == "instructions")
+      return fail_input("--record-frames: not with --metric instructions (record a run that is timed, not counted)");
+  }
   if (Status s = check_grid_options(*c, options, registries); !s) return fail_algorithm("", s.error());
   if (Status s = check_record_target(o.record); !s) return fail_input(s.error().message);
 
@@ -241,13 +251,16 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
     }
   }
   std::filesystem::path csv_path;
+  std::filesystem::path frames_path;
   if (!json_path.empty()) {
     if (json_path.extension() == ".csv")
       return fail_input("--json: " + json_path.string() + " must not end in .csv (the CSV is written beside it)");
     csv_path = csv_beside(json_path);
+    if (o.record_frames) frames_path = recorded_frames_beside(json_path);
   }
   const std::vector<OutputTarget> outputs = {{"--json", json_path, false, o.update_baseline},
                                              {"--json (its CSV twin)", csv_path, false, o.update_baseline},
+                                             {"--record-frames (beside --json)", frames_path, false, false},
                                              {"--gbench", o.gbench, false, false},
                                              {"--junit", o.junit, false, false}};
   // A case named by a file is an input no output may replace (a built-in name is no file here).
@@ -297,9 +310,23 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
     std::fprintf(stderr, "shatterbench: baseline %s not updated: the budget gate failed\n", json_path.string().c_str());
   if (!json_path.empty() && !(o.update_baseline && gate_failed)) {
     report.context = current_context();
+    std::string frames;
+    if (o.record_frames) {
+      // Lent to the encoder and given back: the JSON's block describes them.
+      std::vector<RecordedFrames> recordings;
+      for (GridCell& cell : grid->cells)
+        if (cell.recording) recordings.push_back(std::move(*cell.recording));
+      frames = encode_recorded_frames(recordings);
+      std::size_t k = 0;
+      for (GridCell& cell : grid->cells)
+        if (cell.recording) *cell.recording = std::move(recordings[k++]);
+      grid->recorded_frames_file = frames_path.filename().string();
+      grid->recorded_frames_bytes = frames.size();
+    }
     const std::string json = make_grid_reporter(o.format == "gbench" ? "gbench" : "json")->render(report);
     const std::string csv = make_grid_reporter("csv")->render(report);
-    const FileContent set[] = {{json_path, json}, {csv_path, csv}};
+    std::vector<FileContent> set = {{json_path, json}, {csv_path, csv}};
+    if (o.record_frames) set.push_back({frames_path, frames});
     if (Status s = write_files_atomically(set); !s) return fail_input("--json: " + s.error().message);
     if (o.update_baseline) std::fprintf(stderr, "shatterbench: baseline %s updated\n", json_path.string().c_str());
   }
@@ -372,6 +399,10 @@ void add_grid_command(CLI::App& app, int& exit_code, const Registries& registrie
   cmd->add_option("--threads", o->threads,
                   "Threads of each run: the runtime event's fractures and colliders and each physics step's "
                   "pair tests run on this many at once (default 1, single-threaded as the seed measured)");
+  cmd->add_flag("--record-frames", o->record_frames,
+                "Record the first repetition of every cell for playback: every body's pose and contacts in "
+                "every frame, the frame's stage times and the bodies' meshes, into OUT.frames.bin beside --json "
+                "OUT (docs/results.md)");
   cmd->add_flag("--no-skip", o->no_skip, "Turn every automatic stage skip off (cache, box culling, partial re-solves)");
   cmd->add_option("--schedule", o->schedule,
                   "Schedule of the runtime event: immediate, prefetch or amortized (default: the case's schedule.mode)");

@@ -7,6 +7,7 @@
 #include "harness/grid/calibration.h"
 #include "harness/grid/isolated_cell.h"
 #include "harness/limits.h"
+#include "harness/pipeline/frame/frame_recorder.h"
 #include "harness/pipeline/instruction_marks.h"
 #include "harness/pipeline/workers.h"
 
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <exception>
+#include <optional>
 
 namespace shatter {
 namespace {
@@ -105,6 +107,9 @@ Status check_grid_options(const Case& c, const GridOptions& o, const Registries&
     return Error{fmt::format("--frames: must be <= {} (the limit per run), got {}", kMaxFrames, o.frames)};
   if (!std::isfinite(o.cell_timeout_s) || o.cell_timeout_s < 0.0)
     return Error{fmt::format("--timeout: must be a finite number of seconds > 0, got {}", o.cell_timeout_s)};
+  if (o.record_frames && o.cell_timeout_s > 0.0)
+    return Error{"--record-frames: not available with --timeout (a recording does not cross back from the "
+                 "forked child that runs a cell)"};
   if (o.threads < 1 || o.threads > kMaxWorkerThreads)
     return Error{fmt::format("--threads: must be in 1..{}, got {}", kMaxWorkerThreads, o.threads)};
   if (o.partition_samples < 0) return Error{"partition samples must be >= 0"};
@@ -131,7 +136,8 @@ GridCell grid_cell_settings(const Case& c, const GridOptions& o, int p, int r) {
 }
 
 Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& o, const Registries& registries, int p,
-                               int r, SelfIntersectionVerdicts* verdicts, int& done, int total) {
+                               int r, SelfIntersectionVerdicts* verdicts, int& done, int total,
+                               std::int64_t poses_left) {
   const Case& c = prepared.spec;
   GridCell cell = grid_cell_settings(c, o, p, r);
   const RunSettings settings = grid_settings(c, o);
@@ -153,13 +159,29 @@ Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& 
     run.verdicts = verdicts;
     run.partition_samples = o.partition_samples;
     run.schedule = settings.schedule;
+    std::optional<FrameRecorder> recorder;
+    if (o.record_frames && rep == 0) {
+      recorder.emplace(settings.frames, poses_left);
+      run.recorder = &*recorder;
+    }
     instruction_marks::set_run(p, r, rep);
     const double calibration_before = o.count_instructions ? 0.0 : calibration_ms();
     Result<RunResult> result = run_destruction(prepared, run, registries);
+    // A recording past its limit is the user's request that cannot be met: the grid stops.
+    if (!result && recorder && recorder->over_limit())
+      return Error{fmt::format("--record-frames: cell {} x {}: {} (harness/limits.h; fewer frames or smaller cells)",
+                               p, r, result.error().message)};
     // Every input was checked before the grid began (check_grid_options): what fails now is an
     // algorithm (a fracturer's or stress model's error, or its result refused by the output checks),
     // and it fails this cell alone, as a throw does; the grid goes on and writes every output.
     if (!result) return failed_grid_cell(cell, result.error().message);
+    if (recorder) {
+      cell.recording = recorder->finish(*result);
+      cell.recording->prefracture = p;
+      cell.recording->runtime = r;
+      cell.recording->repetition = rep;
+      cell.recording->seed = result->prefracture_seed;
+    }
     cell.samples.push_back(run_sample(*result, o.extra_figures));
     if (!o.count_instructions) cell.samples.back().calibration_ms = 0.5 * (calibration_before + calibration_ms());
     add_run_accuracy(cell.accuracy, *result, rep == 0);
@@ -201,6 +223,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
   int done = 0;
   // The cells of a row break the same pre-fracture: its fragments are checked once for the whole grid.
   SelfIntersectionVerdicts verdicts;
+  std::int64_t poses_left = kMaxRecordedPoses;  // over every recorded cell
   std::size_t cell_index = 0;
   for (const int p : prefracture) {
     for (const int r : runtime) {
@@ -218,7 +241,7 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
         // An exception out of a plugin's code fails its cell, as in a child; a crash needs --timeout.
         const int before = done;
         try {
-          cell = run_grid_cell(prepared, o, registries, p, r, &verdicts, done, total);
+          cell = run_grid_cell(prepared, o, registries, p, r, &verdicts, done, total, poses_left);
         } catch (const std::exception& e) {
           cell = failed_grid_cell(grid_cell_settings(c, o, p, r), std::string("threw: ") + e.what());
           done = before + o.repetitions;
@@ -230,6 +253,8 @@ Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& o, 
         }
       }
       if (!cell) return cell.error();
+      if (cell->recording)
+        poses_left -= static_cast<std::int64_t>(cell->recording->bodies.size()) * cell->recording->frames;
       cell->wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - cell_start).count();
       out.cells.push_back(std::move(*cell));
     }

@@ -13,6 +13,7 @@
 #include "algorithms/core/result.h"
 #include "harness/cases/run_settings.h"
 #include "harness/grid/run_sample.h"
+#include "harness/limits.h"
 #include "harness/pipeline/destruction_run.h"
 #include "harness/results/cell_summary.h"
 #include "harness/results/grid_record.h"
@@ -49,6 +50,9 @@ struct GridOptions {
   /// runs in a forked child (isolated_cell.h): a cell past it, or one that crashes, becomes a failed
   /// cell and the grid goes on with the next one.
   double cell_timeout_s = 0.0;
+  /// Record the first repetition of every cell for playback (frame/frame_recorder.h): each body's pose
+  /// in every frame, at most kMaxRecordedPoses poses over the grid. Not with a cell timeout.
+  bool record_frames = false;
   /// Called after each run with (runs done, runs in all); may be empty.
   std::function<void(int, int)> progress;
   /// Figures of the caller's own added to every run's record (run_sample.h); may be empty.
@@ -58,7 +62,7 @@ struct GridOptions {
 /// Checks `options` against `c` before anything runs: algorithm names exist (errors name the flag or
 /// the case key), counts >= 1, budget finite and > 0, repetitions and frames >= 1, the cell timeout
 /// finite and >= 0, and the limits of harness/limits.h (repetitions, frames, fragment counts, cells,
-/// pieces per run, frames recorded).
+/// pieces per run, frames recorded), and no recording (record_frames) with a cell timeout.
 /// Plugins are looked up in `registries`.
 Status check_grid_options(const Case& c, const GridOptions& options, const Registries& registries);
 
@@ -68,9 +72,12 @@ GridCell grid_cell_settings(const Case& c, const GridOptions& options, int p, in
 
 /// Runs one cell of the grid, every repetition in this process, passing `verdicts` (clean
 /// self-intersection verdicts the grid shares between its cells, or none) to every run. `done` counts
-/// the runs finished (for `options.progress`, out of `total`).
+/// the runs finished (for `options.progress`, out of `total`). With `options.record_frames` the first
+/// repetition is recorded into the cell's `recording`, with at most `poses_left` poses: past them the
+/// cell is an error ("--record-frames: cell P x R: ... exceed the limit ..."), not a failed cell.
 Result<GridCell> run_grid_cell(const PreparedCase& prepared, const GridOptions& options, const Registries& registries,
-                               int p, int r, SelfIntersectionVerdicts* verdicts, int& done, int total);
+                               int p, int r, SelfIntersectionVerdicts* verdicts, int& done, int total,
+                               std::int64_t poses_left = kMaxRecordedPoses);
 
 /// Runs the grid of `prepared` (options checked by check_grid_options).
 Result<GridResult> run_grid(const PreparedCase& prepared, const GridOptions& options, const Registries& registries);

@@ -52,6 +52,7 @@ GridSample run_sample(const RunResult& run, const ExtraFigures& extra) {
   s.event_frame = run.event_frames.empty() ? -1 : run.event_frames.front();
   s.worst_frame_ms = largest(run.frame_ms);
   s.stages_ms = run.frame_stages.wall;
+  s.frame_stages_ms = run.frame_stage_ms;
   s.setup_ms = run.setup.wall;
   s.stages_cpu_ms = run.frame_stages.cpu;
   s.worst_frame_cpu_ms = largest(run.frame_cpu_ms);

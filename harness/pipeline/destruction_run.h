@@ -40,6 +40,7 @@
 #include "harness/metrics/fracture_metrics.h"
 #include "harness/pipeline/prefracture_cache.h"
 #include "harness/pipeline/stage.h"
+#include "harness/results/frame_stage_times.h"
 
 #include <cstdint>
 #include <optional>
@@ -47,6 +48,8 @@
 #include <vector>
 
 namespace shatter {
+
+class FrameRecorder;
 
 /// A case with its solid built and validated once, for many runs.
 struct PreparedCase {
@@ -79,6 +82,10 @@ struct RunOptions {
   /// steps all run in one frame, one step takes them all). Changes no result, only which frames are
   /// how long and how many steps the event takes.
   int threads = 1;
+  /// Records every body in every frame for playback (frame/frame_recorder.h), or none. Its work runs
+  /// between frames, outside their time; while it records, the run also notes what each body is made
+  /// of where the body is made (a few bytes per body, inside the colliders stage).
+  FrameRecorder* recorder = nullptr;
 };
 
 /// When one runtime event started and when its result took part in the world (docs/pipeline.md
@@ -112,6 +119,9 @@ struct RunResult {
   std::vector<double> frame_cpu_ms;         ///< thread CPU time of each frame
   StageClocks setup;                        ///< offline stage times (before frame 0), wall and CPU
   StageClocks frame_stages;                 ///< stage times inside frames, summed over the frames
+  /// Wall time of each stage in each frame, ms, rounded to the clock's 1 ns: each stage's frames add up
+  /// to its frame_stages.wall, and a frame's stages to at most its frame_ms.
+  FrameStageTimes frame_stage_ms;
   StageLog stages;                          ///< what ran and what was skipped, and why
   bool cache_hit = false;                   ///< the pre-fracture came from the cache
 

@@ -1,6 +1,10 @@
 #include "harness/results/grid_json_reporter.h"
 
+#include "harness/results/results_json_text.h"
 #include "harness/results/run_figures.h"
+#include "harness/results/worst_frame.h"
+
+#include <fmt/core.h>
 
 #include <cstdint>
 
@@ -12,6 +16,29 @@ using Json = nlohmann::ordered_json;
 Json stages_json(const StageTimes& times) {
   Json j = Json::object();
   for (const Stage s : kAllStages) j[std::string(stage_name(s))] = times[static_cast<std::size_t>(s)];
+  return j;
+}
+
+/// One array per stage that took time in some frame, in data-flow order; a frame without time in the
+/// stage is written 0 (an integer: the arrays are mostly zeros outside the event's frames).
+Json frame_stages_json(const FrameStageTimes& times) {
+  Json j = Json::object();
+  for (const Stage s : kAllStages) {
+    const std::vector<double>& column = times[static_cast<std::size_t>(s)];
+    if (column.empty()) continue;
+    Json values = Json::array();
+    for (const double ms : column) values.push_back(ms == 0.0 ? Json(0) : Json(ms));
+    j[std::string(stage_name(s))] = std::move(values);
+  }
+  return j;
+}
+
+/// The stages of `frame` that frame_stages_json writes, each with its time in that frame.
+Json frame_column_json(const FrameStageTimes& times, const StageTimes& frame) {
+  Json j = Json::object();
+  for (const Stage s : kAllStages)
+    if (!times[static_cast<std::size_t>(s)].empty())
+      j[std::string(stage_name(s))] = frame[static_cast<std::size_t>(s)];
   return j;
 }
 
@@ -51,18 +78,39 @@ Json figure_value(const Figure& f) {
 }
 
 Json sample_json(const GridSample& s) {
-  Json j = {{"seed", s.seed},
-            {"frame_ms", s.frame_ms},
-            {"event_ms", s.event_ms},
-            {"event_frame", s.event_frame},
-            {"worst_frame_ms", s.worst_frame_ms},
-            {"stages_ms", stages_json(s.stages_ms)},
-            {"setup_ms", stages_json(s.setup_ms)},
-            {"cpu", {{"worst_frame_ms", s.worst_frame_cpu_ms}, {"stages_ms", stages_json(s.stages_cpu_ms)}}},
-            {"calibration_ms", s.calibration_ms}};
+  Json j = {{"seed", s.seed}, {"frame_ms", s.frame_ms}};
+  if (s.frame_stages_ms) j["frame_stages_ms"] = frame_stages_json(*s.frame_stages_ms);
+  j.update(Json{{"event_ms", s.event_ms}, {"event_frame", s.event_frame}, {"worst_frame_ms", s.worst_frame_ms}});
+  if (const std::optional<WorstFrame> w = sample_worst_frame(s, 0))
+    j["worst_frame_stages_ms"] = frame_column_json(*s.frame_stages_ms, w->stages);
+  j.update(Json{{"stages_ms", stages_json(s.stages_ms)},
+                {"setup_ms", stages_json(s.setup_ms)},
+                {"cpu", {{"worst_frame_ms", s.worst_frame_cpu_ms}, {"stages_ms", stages_json(s.stages_cpu_ms)}}},
+                {"calibration_ms", s.calibration_ms}});
   for (const Figure& f : s.figures.figures()) put_figure(j, f);
   if (s.instructions) j["instructions"] = instructions_json(*s.instructions);
   return j;
+}
+
+/// The `recorded_frames` block: the sidecar's name (in the JSON's folder), size and layout, and what
+/// each of its recordings holds, in the sidecar's order.
+Json recorded_frames_json(const GridResult& grid) {
+  Json recordings = Json::array();
+  for (const GridCell& c : grid.cells) {
+    if (!c.recording) continue;
+    const RecordedFrames& r = *c.recording;
+    recordings.push_back({{"prefracture", r.prefracture},
+                          {"runtime", r.runtime},
+                          {"repetition", r.repetition},
+                          {"seed", r.seed},
+                          {"frames", r.frames},
+                          {"bodies", r.bodies.size()},
+                          {"meshes", r.meshes.size()}});
+  }
+  return {{"path", grid.recorded_frames_file},
+          {"bytes", grid.recorded_frames_bytes},
+          {"layout", fmt::format("SBFRAMES version {}, docs/results.md (Recorded frames)", kRecordedFramesVersion)},
+          {"recordings", recordings}};
 }
 
 /// A failed cell keeps its settings and the reason; it has no figures.
@@ -102,16 +150,21 @@ nlohmann::ordered_json grid_cell_to_json(const GridCell& c) {
             {"prefracturer", c.prefracturer},
             {"fracturer", c.fracturer},
             {"stress", c.stress},
-            {"worst_frame_ms", c.worst_frame_ms},
-            {"frame_ms", statistics_json(c.frame_ms)},
-            {"event_ms", c.event_ms},
-            {"stages_ms", stages_json(c.stages_ms)},
-            {"setup_ms", stages_json(c.setup_ms)},
-            {"error", accuracy_json(c.accuracy)},
-            {"within_budget", c.within_budget},
-            {"stages_run", c.stages_run},
-            {"stages_skipped", skipped},
-            {"schedule", c.schedule}};
+            {"worst_frame_ms", c.worst_frame_ms}};
+  if (const std::optional<WorstFrame> w = cell_worst_frame(c)) {
+    j["worst_frame_repetition"] = w->repetition;
+    j["worst_frame_stages_ms"] =
+        frame_column_json(*c.samples[static_cast<std::size_t>(w->repetition)].frame_stages_ms, w->stages);
+  }
+  j.update(Json{{"frame_ms", statistics_json(c.frame_ms)},
+                {"event_ms", c.event_ms},
+                {"stages_ms", stages_json(c.stages_ms)},
+                {"setup_ms", stages_json(c.setup_ms)},
+                {"error", accuracy_json(c.accuracy)},
+                {"within_budget", c.within_budget},
+                {"stages_run", c.stages_run},
+                {"stages_skipped", skipped},
+                {"schedule", c.schedule}});
   bool verdict_written = false;
   for (const Figure& f : c.summaries.figures()) {
     if (!verdict_written && f.spec.cell_order >= kLatencyVerdictCellOrder) {
@@ -164,12 +217,13 @@ nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::orde
   if (grid.cell_timeout_s > 0.0) out["cell_timeout_s"] = grid.cell_timeout_s;
   out["passed"] = grid.passed();
   out["wall_s"] = grid.wall_s;
+  if (!grid.recorded_frames_file.empty()) out["recorded_frames"] = recorded_frames_json(grid);
   out["cells"] = cells;
   return out;
 }
 
 std::string JsonGridReporter::render(const GridReport& r) const {
-  return grid_to_json(r.grid, r.case_block, r.context, r.input_block).dump(1) + "\n";
+  return results_json_text(grid_to_json(r.grid, r.case_block, r.context, r.input_block)) + "\n";
 }
 
 }  // namespace shatter

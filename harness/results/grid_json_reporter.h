@@ -9,7 +9,7 @@ namespace shatter {
 /// Version of the results schema written in `schema_version`; bumped on incompatible changes.
 inline constexpr int kGridSchemaVersion = 1;
 
-/// The results JSON (`dump(1)` and a line break).
+/// The results JSON (results_json_text: `dump(1)`'s layout, per-frame stage arrays on one line) and a line break.
 class JsonGridReporter final : public GridReporter {
  public:
   /// "json".
@@ -27,7 +27,7 @@ nlohmann::ordered_json case_to_json(const Case& c);
 
 /// The results JSON: `schema_version`, `context`, `case` (`case_block`, from case_to_json), `input`
 /// (`input_block`, from input_solid_json, when not null), `budget_ms`, `repetitions`, `frames`, `no_skip`, `shard` (when a shard), `cell_timeout_s` (when
-/// set), `passed`, `wall_s`, `cells`.
+/// set), `passed`, `wall_s`, `recorded_frames` (when `grid.recorded_frames_file` is set), `cells`.
 nlohmann::ordered_json grid_to_json(const GridResult& grid, const nlohmann::ordered_json& case_block,
                                     const RunContext& context, const nlohmann::ordered_json& input_block = nullptr);
 

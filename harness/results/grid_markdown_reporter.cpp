@@ -1,5 +1,7 @@
 #include "harness/results/grid_markdown_reporter.h"
 
+#include "harness/results/worst_frame.h"
+
 #include <fmt/core.h>
 #include <fmt/format.h>
 
@@ -68,6 +70,30 @@ std::string figure_tables(const GridResult& grid) {
   return out;
 }
 
+/// Stages shown per cell in the worst-frame table.
+constexpr std::size_t kWorstFrameStagesShown = 3;
+
+/// One row per cell that has per-frame stage times: its reported worst frame (cell_worst_frame) and
+/// that frame's largest stages with their share of it; empty when no cell has them.
+std::string worst_frame_table(const GridResult& grid) {
+  std::string rows;
+  for (const GridCell& c : grid.cells) {
+    if (!c.failed.empty()) continue;
+    const std::optional<WorstFrame> w = cell_worst_frame(c);
+    if (!w) continue;
+    std::vector<std::string> parts;
+    for (const auto& [stage, ms] : largest_stages(w->stages, kWorstFrameStagesShown))
+      parts.push_back(fmt::format("{} {:.2f} ({:.0f} %)", stage_name(stage), ms, w->ms > 0.0 ? 100.0 * ms / w->ms : 0.0));
+    rows += fmt::format("| {} x {} | {:.2f} | {} | {} | {} |\n", c.prefracture, c.runtime, w->ms, w->repetition,
+                        w->frame, parts.empty() ? std::string("-") : fmt::format("{}", fmt::join(parts, " · ")));
+  }
+  if (rows.empty()) return {};
+  return fmt::format("\nWhat the worst frame is made of: the slowest frame of the repetition whose slowest frame is "
+                     "the median one, in ms, and its {} largest stages, ms (share of the frame)\n\n"
+                     "| cell | worst frame | repetition | frame | largest stages |\n|---|---:|---:|---:|---|\n{}",
+                     kWorstFrameStagesShown, rows);
+}
+
 }  // namespace
 
 std::string grid_to_markdown(const GridResult& grid, const std::string& case_name) {
@@ -97,6 +123,7 @@ std::string grid_to_markdown(const GridResult& grid, const std::string& case_nam
                          s.value_or("bodies_peak", 0.0), s.value_or("particles_peak", 0.0));
     });
     out += figure_tables(grid);
+    out += worst_frame_table(grid);
   }
   int over = 0, late = 0;
   std::vector<std::string> failed;

@@ -26,7 +26,9 @@ class MarkdownGridReporter final : public GridReporter {
 
 /// Each cell its worst frame in ms, marked "**x.xx !**" when over budget ("**timeout after 2 s !**"
 /// when failed); then the latency table (latency, bodies, particles); then one table per figure whose
-/// spec asks for Markdown (kFigureInMarkdown), each cell its summary; then the verdict lines.
+/// spec asks for Markdown (kFigureInMarkdown), each cell its summary; then "What the worst frame is
+/// made of" (per cell the frame of cell_worst_frame and its largest stages, when the samples hold
+/// per-frame stage times); then the verdict lines.
 std::string grid_to_markdown(const GridResult& grid, const std::string& case_name);
 
 /// The instruction-mode table: each cell the median over repetitions of its largest frame's retired

@@ -104,10 +104,34 @@ InstructionCounts instructions(const Json& j, const std::string& path) {
   return c;
 }
 
-/// Keys of a sample that are not figures of its record.
+/// A sample's `frame_stages_ms`: per stage named, one number >= 0 per frame (`frames` of them); nullopt
+/// in a file from before the key.
+std::optional<FrameStageTimes> frame_stages(const Json& j, std::size_t frames, const std::string& path) {
+  if (!j.contains("frame_stages_ms")) return std::nullopt;
+  const std::string where = join(path, "frame_stages_ms");
+  const Json& o = j.at("frame_stages_ms");
+  if (!o.is_object()) throw BadKey(where + ": expected an object");
+  FrameStageTimes out;
+  for (auto it = o.begin(); it != o.end(); ++it) {
+    const std::optional<Stage> stage = stage_from_name(it.key());
+    if (!stage) throw BadKey(join(where, it.key()) + ": not a stage name");
+    std::vector<double> values = numbers(o, it.key(), where);
+    if (values.size() != frames)
+      throw BadKey(fmt::format("{}: expected {} values (one per frame), got {}", join(where, it.key()), frames,
+                               values.size()));
+    for (const double ms : values)
+      if (ms < 0.0) throw BadKey(join(where, it.key()) + ": expected times >= 0");
+    out[static_cast<std::size_t>(*stage)] = std::move(values);
+  }
+  return out;
+}
+
+/// Keys of a sample that are not figures of its record (`worst_frame_stages_ms` is derived from
+/// `frame_ms` and `frame_stages_ms`, so it is not read).
 bool typed_sample_key(const std::string& key) {
-  static const char* const typed[] = {"seed",      "frame_ms", "event_ms", "event_frame", "worst_frame_ms",
-                                      "stages_ms", "setup_ms", "cpu",      "calibration_ms", "instructions"};
+  static const char* const typed[] = {"seed",           "frame_ms",       "frame_stages_ms",       "event_ms",
+                                      "event_frame",    "worst_frame_ms", "worst_frame_stages_ms", "stages_ms",
+                                      "setup_ms",       "cpu",            "calibration_ms",        "instructions"};
   for (const char* t : typed)
     if (key == t) return true;
   return false;
@@ -200,6 +224,7 @@ GridSample sample(const Json& j, const std::string& path, const Json* cell) {
   s.event_frame = static_cast<int>(integer(j, "event_frame", path));
   s.worst_frame_ms = number(j, "worst_frame_ms", path);
   s.stages_ms = stages(j, "stages_ms", path);
+  s.frame_stages_ms = frame_stages(j, s.frame_ms.size(), path);
   s.setup_ms = stages(j, "setup_ms", path);
   const Json& cpu = at(j, "cpu", path);
   s.worst_frame_cpu_ms = number(cpu, "worst_frame_ms", join(path, "cpu"));
@@ -309,6 +334,10 @@ Result<StoredGrid> grid_results_from_json(const nlohmann::ordered_json& j, const
     out.case_block = at(j, "case", "");
     out.case_name = text(out.case_block, "name", "case");
     if (j.contains("input")) out.input_block = j.at("input");
+    if (j.contains("recorded_frames")) {
+      out.recorded_frames_block = j.at("recorded_frames");
+      (void)text(out.recorded_frames_block, "path", "recorded_frames");  // throws unless a name is there
+    }
     if (j.contains("metric")) out.metric = text(j, "metric", "");
     if (out.metric != "time" && out.metric != "instructions")
       return Error{what + ": metric: expected \"time\" or \"instructions\", got \"" + out.metric + "\""};

@@ -10,6 +10,8 @@
 /// output writes without code of its own for that figure.
 
 #include "harness/results/figure_record.h"
+#include "harness/results/frame_stage_times.h"
+#include "harness/results/recorded_frames.h"
 #include "harness/results/run_figures.h"
 #include "harness/results/sample_statistics.h"
 #include "harness/results/stage_times.h"
@@ -39,6 +41,9 @@ struct GridSample {
   int event_frame = -1;                          ///< its index (-1: no impact landed)
   double worst_frame_ms = 0.0;                   ///< the slowest frame, ms
   StageTimes stages_ms{};                        ///< stage times inside frames, ms
+  /// Every frame's stage times (wall), ms: each stage's values add up to its stages_ms; nullopt in a
+  /// file written before they were kept.
+  std::optional<FrameStageTimes> frame_stages_ms;
   StageTimes setup_ms{};                         ///< offline stage times, ms
   StageTimes stages_cpu_ms{};                    ///< thread CPU time of the stages inside frames, ms
   double worst_frame_cpu_ms = 0.0;               ///< thread CPU time of the frame with the most of it, ms
@@ -87,6 +92,9 @@ struct GridCell {
   /// Wall time the cell took, every repetition and its setup (the JUnit test's time), s; 0 when not
   /// measured (a cell read back from results).
   double wall_s = 0.0;
+  /// Its first repetition recorded for playback (`grid --record-frames`); written to the sidecar, not
+  /// to the JSON, so a cell read back from results has none.
+  std::optional<RecordedFrames> recording;
 };
 
 /// A whole grid.
@@ -104,6 +112,10 @@ struct GridResult {
   int shard_index = 0;                 ///< which shard this is (`grid --shard K/N`)
   int shard_count = 1;                 ///< of how many
   double cell_timeout_s = 0.0;         ///< wall-time limit per cell, s (0: none)
+  /// Where the cells' recordings were written (the sidecar beside the JSON, as the JSON names it) and
+  /// its size in bytes; empty when nothing was recorded. The results JSON's `recorded_frames` block.
+  std::string recorded_frames_file;
+  std::uint64_t recorded_frames_bytes = 0;  ///< size of that file, bytes
 
   /// True when every cell ran, is within the frame budget and the latency budget, and its fractures
   /// pass their result checks (cell_checks.h).

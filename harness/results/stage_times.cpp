@@ -17,4 +17,10 @@ std::string_view stage_name(Stage stage) {
   return "unknown";
 }
 
+std::optional<Stage> stage_from_name(std::string_view name) {
+  for (const Stage s : kAllStages)
+    if (stage_name(s) == name) return s;
+  return std::nullopt;
+}
+
 }  // namespace shatter

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -33,6 +34,9 @@ inline constexpr std::array<Stage, kStageCount> kAllStages = {
 
 /// The stage's name in results and tables, e.g. "runtime_fracture".
 std::string_view stage_name(Stage stage);
+
+/// The stage named `name` (stage_name's inverse), or nullopt for a name no stage has.
+std::optional<Stage> stage_from_name(std::string_view name);
 
 /// Milliseconds (or, in instruction mode, retired instructions) per stage, indexed by Stage.
 using StageTimes = std::array<double, kStageCount>;

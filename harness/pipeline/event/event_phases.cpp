@@ -1,6 +1,7 @@
 #include "harness/pipeline/event/event_phases.h"
 
 #include "algorithms/fracture/local_fracture.h"
+#include "harness/pipeline/frame/frame_recorder.h"
 #include "harness/pipeline/structure_response.h"
 
 #include <fmt/core.h>
@@ -131,24 +132,34 @@ Status falling_clusters_phase(RunState& run, RuntimeEvent& e) {
 Status colliders_phase(RunState& run, RuntimeEvent& e) {
   StageTimer timer(run.result.frame_stages, Stage::colliders);
   const double density = run.spec.material.density;
+  FrameRecorder* recorder = run.options.recorder;
   std::size_t total = 0;
   for (const auto& list : e.pieces) total += list.size();
   if (e.piece_bodies.size() < total) {
     // The next pieces (items_per_step), their hulls built at once.
     const std::size_t until = e.piece_bodies.size() + items_per_step(run, total - e.piece_bodies.size(), kColliderBatch);
     std::vector<const Fragment*> batch;
+    std::vector<BodyOrigin> origins;  // only while recording
     std::size_t flat = 0;
-    for (const auto& list : e.pieces)
-      for (const Fragment& p : list) {
-        if (flat >= e.piece_bodies.size() && flat < until) batch.push_back(&p);
+    for (std::size_t k = 0; k < e.pieces.size(); ++k)
+      for (std::size_t j = 0; j < e.pieces[k].size(); ++j) {
+        if (flat >= e.piece_bodies.size() && flat < until) {
+          batch.push_back(&e.pieces[k][j]);
+          if (recorder) origins.push_back({RecordedBodyKind::piece, e.hit_fragments[k], static_cast<int>(j), {}});
+        }
         ++flat;
       }
-    for (const int body : run.world->prepare_fragments(batch, density, run.workers)) e.piece_bodies.push_back(body);
+    const std::vector<int> bodies = run.world->prepare_fragments(batch, density, run.workers);
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+      e.piece_bodies.push_back(bodies[i]);
+      if (recorder) recorder->body_made(bodies[i], std::move(origins[i]));
+    }
   } else if (e.cluster_bodies.size() < e.falling.size()) {
+    const std::vector<int>& cluster = e.falling[e.cluster_bodies.size()];
     std::vector<Fragment> members;
-    for (const int f : e.falling[e.cluster_bodies.size()])
-      members.push_back(run.result.fragments[static_cast<std::size_t>(f)]);
+    for (const int f : cluster) members.push_back(run.result.fragments[static_cast<std::size_t>(f)]);
     e.cluster_bodies.push_back(run.world->prepare_cluster(members, density));
+    if (recorder) recorder->body_made(e.cluster_bodies.back(), {RecordedBodyKind::cluster, -1, -1, cluster});
   }
   if (e.piece_bodies.size() == total && e.cluster_bodies.size() == e.falling.size())
     e.phase = phase_after(e.phase, event_route(run));

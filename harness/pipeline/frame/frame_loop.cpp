@@ -3,6 +3,7 @@
 #include "algorithms/core/mesh.h"
 #include "harness/pipeline/event/event_phases.h"
 #include "harness/pipeline/frame/fade_out.h"
+#include "harness/pipeline/frame/frame_recorder.h"
 #include "harness/pipeline/frame/planted_slowdown.h"
 #include "harness/pipeline/schedule/event_schedules.h"
 
@@ -58,6 +59,18 @@ void step_world(RunState& run) {
   }
 }
 
+/// The frame's stage times: how much each stage's clock grew in it since `before` (frame_stage_ms).
+void record_frame_stages(RunState& run, const StageTimes& before, int frames) {
+  RunResult& r = run.result;
+  for (std::size_t s = 0; s < kStageCount; ++s) {
+    const double ms = round_to_clock_ms(r.frame_stages.wall[s] - before[s]);
+    if (ms == 0.0) continue;
+    std::vector<double>& column = r.frame_stage_ms[s];
+    if (column.empty()) column.assign(static_cast<std::size_t>(frames), 0.0);
+    column[static_cast<std::size_t>(run.frame)] = ms;
+  }
+}
+
 void record_frame(RunState& run, double ms, double cpu_ms, bool event_frame) {
   RunResult& r = run.result;
   const auto f = static_cast<std::size_t>(run.frame);
@@ -82,6 +95,7 @@ Status run_frames(RunState& run, std::vector<RuntimeEvent>& events, int frames) 
   std::size_t next = 0;
   for (run.frame = 0; run.frame < frames; ++run.frame) {
     instruction_marks::set_frame(run.frame);
+    const StageTimes stages_before = run.result.frame_stages.wall;
     const double cpu_start = thread_cpu_ms();
     const auto start = std::chrono::steady_clock::now();
     bool event_frame = false;
@@ -94,6 +108,9 @@ Status run_frames(RunState& run, std::vector<RuntimeEvent>& events, int frames) 
     const double ms = ms_since(start);
     const double cpu_ms = thread_cpu_ms() - cpu_start;
     record_frame(run, ms, cpu_ms, event_frame);
+    record_frame_stages(run, stages_before, frames);
+    if (run.options.recorder)
+      if (Status s = run.options.recorder->record(run.world.get(), run.frame); !s) return s;
   }
   if (run.world && run.plan.physics) run.result.stages.ran(Stage::physics);
   return {};

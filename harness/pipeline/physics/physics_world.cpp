@@ -124,6 +124,8 @@ struct Body {
   std::unique_ptr<btCollisionShape> shape;                   ///< the body's collision shape
   std::unique_ptr<btRigidBody> rigid;
   Eigen::Matrix3d principal = Eigen::Matrix3d::Identity();   ///< principal axes (columns), mesh frame
+  Vec3 mesh_centroid = Vec3::Zero();                         ///< centroid in mesh coordinates, m
+  double scale = 1.0;                                        ///< the collider's scale (set_scale)
   bool in_world = true;                                      ///< added to the dynamics world
 };
 
@@ -272,6 +274,7 @@ struct PhysicsWorld::Impl {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(density * m.inertia);
     b.principal = eig.eigenvectors();
     if (b.principal.determinant() < 0.0) b.principal.col(2) *= -1.0;  // a proper rotation
+    b.mesh_centroid = m.centroid;
     const Vec3 moments = eig.eigenvalues();  // ascending, kg m^2
 
     if (fragments.size() == 1) {
@@ -375,6 +378,7 @@ bool PhysicsWorld::in_world(int body) const { return impl_->body(body).in_world;
 void PhysicsWorld::set_scale(int body, double scale) {
   require(std::isfinite(scale) && scale > 0.0, "scale must be finite and > 0");
   Body& b = const_cast<Body&>(impl_->body(body));
+  b.scale = scale;
   b.shape->setLocalScaling(btVector3(static_cast<btScalar>(scale), static_cast<btScalar>(scale), static_cast<btScalar>(scale)));
   if (b.in_world) {
     const TreeMarginScope margin(impl_->settings.broadphase_margin);
@@ -415,6 +419,10 @@ Eigen::Matrix3d PhysicsWorld::rotation(int body) const {
   return from_bt(b.rigid->getCenterOfMassTransform().getBasis()) * b.principal.transpose();
 }
 
+Vec3 PhysicsWorld::mesh_centroid(int body) const { return impl_->body(body).mesh_centroid; }
+
+double PhysicsWorld::scale(int body) const { return impl_->body(body).scale; }
+
 std::vector<Vec3> PhysicsWorld::collider_points(int body) const {
   const Body& b = impl_->body(body);
   const btTransform& to_world = b.rigid->getCenterOfMassTransform();
@@ -454,6 +462,8 @@ bool PhysicsWorld::contains(int body) const {
 }
 
 int PhysicsWorld::body_count() const { return impl_->live; }
+
+int PhysicsWorld::id_bound() const { return static_cast<int>(impl_->bodies.size()); }
 
 HullPairCounts PhysicsWorld::hull_pair_counts() const { return impl_->hull_pairs.counts(); }
 

@@ -151,6 +151,11 @@ class PhysicsWorld {
   [[nodiscard]] Vec3 position(int body) const;
   /// Rotation from the fragment's original mesh coordinates to the world (identity until it turns).
   [[nodiscard]] Eigen::Matrix3d rotation(int body) const;
+  /// The body's centroid in the fragments' original mesh coordinates, m (where it was made):
+  /// `x_world = rotation(body) * (x_mesh - mesh_centroid(body)) + position(body)`.
+  [[nodiscard]] Vec3 mesh_centroid(int body) const;
+  /// The collider's scale set by set_scale (1 as made).
+  [[nodiscard]] double scale(int body) const;
   /// Velocity of the body's centroid, m/s, world.
   [[nodiscard]] Vec3 linear_velocity(int body) const;
   /// Angular velocity, rad/s, world.
@@ -166,6 +171,8 @@ class PhysicsWorld {
   [[nodiscard]] bool contains(int body) const;
   /// Number of bodies in the world (prepared ones and the ground plane are not counted).
   [[nodiscard]] int body_count() const;
+  /// Ids given so far: every id ever returned is below it (ids count up from 0, removed ones included).
+  [[nodiscard]] int id_bound() const;
   /// Pairs of bodies whose bounding boxes overlap (Bullet's broadphase pairs, each with a contact
   /// manifold: PhysicsSettings::contact_pool_size), as of the last step.
   [[nodiscard]] int overlapping_pairs() const;

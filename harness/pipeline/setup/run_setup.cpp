@@ -3,6 +3,7 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/solid_check.h"
 #include "algorithms/fracture/local_fracture.h"
+#include "harness/pipeline/frame/frame_recorder.h"
 #include "harness/pipeline/setup/offline_structure.h"
 #include "harness/pipeline/structure_response.h"
 
@@ -124,19 +125,23 @@ void build_world(RunState& run) {
   run.world = std::make_unique<PhysicsWorld>(settings);
   run.world->set_workers(&run.workers);
   const double density = run.spec.material.density;
+  FrameRecorder* recorder = run.options.recorder;
   run.static_body.assign(r.fragments.size(), -1);
   for (std::size_t f = 0; f < r.fragments.size(); ++f) {
+    int body = -1;
     if (run.standing[f]) {
-      run.static_body[f] = run.world->add_fragment(r.fragments[f], density, /*is_static=*/true);
+      body = run.static_body[f] = run.world->add_fragment(r.fragments[f], density, /*is_static=*/true);
     } else if (!run.plan.bonds) {
-      run.world->add_fragment(r.fragments[f], density);
+      body = run.world->add_fragment(r.fragments[f], density);
     }
+    if (recorder && body >= 0) recorder->body_made(body, {RecordedBodyKind::fragment, static_cast<int>(f), -1, {}});
   }
   std::vector<Fragment> members;
   for (const std::vector<int>& cluster : r.falling_clusters) {
     members.clear();
     for (const int f : cluster) members.push_back(r.fragments[static_cast<std::size_t>(f)]);
-    run.world->add_cluster(members, density);
+    const int body = run.world->add_cluster(members, density);
+    if (recorder) recorder->body_made(body, {RecordedBodyKind::cluster, -1, -1, cluster});
   }
   r.stages.ran(Stage::colliders);
 }

@@ -91,8 +91,8 @@ TEST_CASE("cli: grid refuses frames, repetitions, cells and pieces past the limi
        {"cell 100000 x 11 can make 1100000 runtime pieces, which exceeds the limit of 1000000 pieces per run"}},
       {"grid --case building --frames 1 --repetitions 1 --prefracture 100001 --runtime 1" + out,
        {"--prefracture: counts must be <= 100000 (the fragment limit), got 100001"}},
-      {"grid --case building --frames 100000 --repetitions 201" + cell + out,
-       {"100000 x 201 x 1 = 20100000 frames recorded exceed the limit of 20000000"}},
+      {"grid --case building --frames 100000 --repetitions 81" + cell + out,
+       {"100000 x 81 x 1 = 8100000 frames recorded exceed the limit of 8000000"}},
       {"table --mesh " + write(dir / "t.off", "OFF\n0 0 0\n") + " --repetitions 1001", {"--repetitions", "1000"}},
   };
   for (const Refusal& b : cases) require_refused(b, json);
