@@ -144,6 +144,54 @@ ReportAccuracy read_accuracy(const Json& j, const std::string& file) {
   return a;
 }
 
+ReportStability read_stability(const Json& j, const std::string& file) {
+  ReportStability s;
+  s.file = file;
+  const Json& rows = at(j, "results", "");
+  if (!rows.is_array()) throw KeyError{"results: expected an array"};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    HazardResult r;
+    if (!from_json(rows[i], r))
+      throw KeyError{fmt::format("results[{}]: expected a stability verdict (hazard, algorithm, kind, outcome, detail, "
+                                 "worst_error, fragments, time_ms)", i)};
+    s.results.push_back(std::move(r));
+  }
+  return s;
+}
+
+ReportTable read_table(const Json& j, const std::string& file) {
+  ReportTable t;
+  t.file = file;
+  const Json& rows = at(j, "rows", "");
+  if (!rows.is_array()) throw KeyError{"rows: expected an array"};
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string path = fmt::format("rows[{}]", i);
+    const Json& r = rows[i];
+    ReportTableRow row;
+    row.mesh = text(r, "mesh", path);
+    row.algorithm = text(r, "algorithm", path);
+    row.fragments = integer(r, "fragments", path);
+    if (r.contains("refused")) {
+      row.outcome = "refused: " + text(r, "refused", path);
+    } else if (r.contains("failed")) {
+      row.outcome = "failed: " + text(r, "failed", path);
+    } else {
+      row.outcome = fmt::format("{} fragments", integer(r, "produced", path));
+      row.time_ms = number(r, "time_ms", path);
+    }
+    t.rows.push_back(std::move(row));
+  }
+  return t;
+}
+
+void check_schema_version(const Json& j) {
+  const auto it = j.find("schema_version");
+  if (it == j.end()) return;  // stability results carry none
+  if (!it->is_number_integer() || it->get<long long>() != kReportSchemaVersion)
+    throw KeyError{fmt::format("schema_version {}: this shatterbench reads results of version {}", it->dump(),
+                               kReportSchemaVersion)};
+}
+
 }  // namespace
 
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
@@ -158,12 +206,24 @@ Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
       return Error{file + ": " + *key + ": a number that is not finite (too large for a double)"};
     try {
       if (!j.is_object()) throw KeyError{"top level: expected an object"};
+      check_schema_version(j);
+      const auto kind = j.find("kind");
+      const std::string kind_text = kind != j.end() && kind->is_string() ? kind->get<std::string>() : std::string();
       if (j.contains("cells")) {
         inputs.grids.push_back(read_grid(j, file));
-      } else if (j.contains("points") || j.value("kind", "") == "accuracy") {
+        inputs.grids.back().document = std::move(*parsed);
+      } else if (kind_text == "table") {
+        inputs.tables.push_back(read_table(j, file));
+        inputs.tables.back().document = std::move(*parsed);
+      } else if (j.contains("points") || kind_text == "accuracy") {
         inputs.accuracies.push_back(read_accuracy(j, file));
+        inputs.accuracies.back().document = std::move(*parsed);
+      } else if (j.contains("results")) {
+        inputs.stabilities.push_back(read_stability(j, file));
+        inputs.stabilities.back().document = std::move(*parsed);
       } else {
-        throw KeyError{"cells: missing (not a grid results file), and no points (not an accuracy results file)"};
+        throw KeyError{"not a results file of grid (no cells), accuracy (no points), table (no kind \"table\") "
+                       "or stability (no results)"};
       }
     } catch (const KeyError& e) {
       return Error{file + ": " + e.message};

@@ -1,10 +1,14 @@
 #pragma once
-/// The results files `shatterbench report` reads: grid results (docs/results.md, "Grid results JSON")
-/// and accuracy results ("Accuracy results JSON"), checked key by key.
+/// The results files `shatterbench report` reads: grid results (docs/results.md, "Grid results JSON"),
+/// accuracy results ("Accuracy results JSON"), table results ("Table results JSON") and stability
+/// results (docs/cli.md, "stability"), checked key by key; each file's whole document is kept for the
+/// HTML page.
 
 #include "algorithms/core/result.h"
 #include "harness/accuracy/accuracy_point.h"
+#include "harness/stability/hazard_outcome.h"
 
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -31,6 +35,7 @@ struct ReportCell {
 /// One grid results file.
 struct ReportGrid {
   std::string file;            ///< path as given
+  nlohmann::ordered_json document;  ///< the whole file as read
   std::string case_name;       ///< case.name
   double budget_ms = 0.0;      ///< budget_ms
   int frames = 0;              ///< frames per run (0 when absent)
@@ -40,18 +45,48 @@ struct ReportGrid {
 /// One accuracy results file.
 struct ReportAccuracy {
   std::string file;                    ///< path as given
+  nlohmann::ordered_json document;     ///< the whole file as read
   std::vector<AccuracyPoint> points;   ///< as in the file (time_ms NaN when null)
 };
 
-/// Everything the report shows.
-struct ReportInputs {
-  std::vector<ReportGrid> grids;
-  std::vector<ReportAccuracy> accuracies;
+/// One stability results file (`stability --json`).
+struct ReportStability {
+  std::string file;                    ///< path as given
+  nlohmann::ordered_json document;     ///< the whole file as read
+  std::vector<HazardResult> results;   ///< one verdict per entry of `results`
 };
 
-/// Reads every file; a grid file has `cells`, an accuracy file `kind` "accuracy" and `points`. Errors
-/// name the file and, for a missing or mistyped key, the key path ("b.json: cells[2].worst_frame_ms:
-/// expected a number").
+/// One row of a table results file, as far as the Markdown page needs it.
+struct ReportTableRow {
+  std::string mesh;          ///< mesh file name
+  std::string algorithm;     ///< fracturer name
+  int fragments = 0;         ///< requested fragments
+  std::string outcome;       ///< "25 fragments", "refused: <message>" or "failed: <message>"
+  std::optional<double> time_ms;  ///< median time, ms; empty for a refused or failed row
+};
+
+/// One table results file (`table --json`).
+struct ReportTable {
+  std::string file;                    ///< path as given
+  nlohmann::ordered_json document;     ///< the whole file as read
+  std::vector<ReportTableRow> rows;    ///< as in the file
+};
+
+/// Everything the report shows, each kind in the order the files were given.
+struct ReportInputs {
+  std::vector<ReportGrid> grids;            ///< grid results
+  std::vector<ReportAccuracy> accuracies;   ///< accuracy results
+  std::vector<ReportStability> stabilities; ///< stability results
+  std::vector<ReportTable> tables;          ///< table results
+};
+
+/// The schema version of results files this build reads.
+inline constexpr int kReportSchemaVersion = 1;
+
+/// Reads every file; a grid file has `cells`, a table file `kind` "table" and `rows`, an accuracy file
+/// `kind` "accuracy" and `points`, a stability file `results`. A `schema_version` other than
+/// kReportSchemaVersion is refused. Errors name the file and, for a missing or mistyped key, the key
+/// path ("b.json: cells[2].worst_frame_ms: expected a number").
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files);
 
 }  // namespace shatter

@@ -88,14 +88,36 @@ std::string accuracy_section(const AccuracyFigures& a) {
   return out + shifted + "\n";
 }
 
+std::string stability_section(const ReportStability& s) {
+  std::string out = fmt::format("## Stability verdicts\n\nSource: {}.\n\n", markdown_cell(s.file));
+  out += "| hazard | algorithm | kind | outcome | worst error | time ms | detail |\n|---|---|---|---|---:|---:|---|\n";
+  for (const HazardResult& r : s.results)
+    out += fmt::format("| {} | {} | {} | {} | {:.3g} | {:.0f} | {} |\n", markdown_cell(r.hazard), markdown_cell(r.algorithm),
+                       markdown_cell(r.kind), outcome_tag(r.outcome), r.worst_error, r.time_ms, markdown_cell(r.detail));
+  return out + "\n";
+}
+
+std::string table_section(const ReportTable& t) {
+  std::string out = fmt::format("## Fracture table\n\nSource: {}.\n\n", markdown_cell(t.file));
+  out += "| mesh | algorithm | requested | produced | median ms |\n|---|---|---:|---|---:|\n";
+  for (const ReportTableRow& r : t.rows)
+    out += fmt::format("| {} | {} | {} | {} | {} |\n", markdown_cell(r.mesh), markdown_cell(r.algorithm), r.fragments,
+                       markdown_cell(r.outcome), r.time_ms ? fmt::format("{:.3f}", *r.time_ms) : std::string());
+  return out + "\n";
+}
+
 }  // namespace
 
-std::string report_page(const std::vector<GridFigures>& grids, const std::vector<AccuracyFigures>& accuracies) {
+std::string report_page(const std::vector<GridFigures>& grids, const std::vector<AccuracyFigures>& accuracies,
+                        const std::vector<ReportStability>& stabilities, const std::vector<ReportTable>& tables) {
   std::string out = "# shatterbench report\n\n";
   out += "Made by `shatterbench report` from the results files named in each section; the images are drawn by "
-         "gnuplot from the `.dat` and `.gp` files beside them.\n\n";
+         "gnuplot from the `.dat` and `.gp` files beside them. The interactive page of the same results is "
+         "`report.html` beside this file.\n\n";
   for (const GridFigures& g : grids) out += grid_section(g);
   for (const AccuracyFigures& a : accuracies) out += accuracy_section(a);
+  for (const ReportStability& s : stabilities) out += stability_section(s);
+  for (const ReportTable& t : tables) out += table_section(t);
   return out;
 }
 

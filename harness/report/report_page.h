@@ -31,7 +31,8 @@ struct AccuracyFigures {
 
 /// The page: per grid file its heat map, the worst-frame table (rows pre-fracture, columns runtime,
 /// over-budget cells bold with "!"), the stage bars and stage table of the chosen cell; per accuracy
-/// file its charts and its tables.
-std::string report_page(const std::vector<GridFigures>& grids, const std::vector<AccuracyFigures>& accuracies);
+/// file its charts and its tables; per stability file its verdicts and per table file its rows.
+std::string report_page(const std::vector<GridFigures>& grids, const std::vector<AccuracyFigures>& accuracies,
+                        const std::vector<ReportStability>& stabilities, const std::vector<ReportTable>& tables);
 
 }  // namespace shatter

@@ -1,6 +1,7 @@
 #include "harness/report/report_writer.h"
 
 #include "harness/report/heat_map_plot.h"
+#include "harness/report/html/report_html.h"
 #include "harness/report/pareto_plot.h"
 #include "harness/report/report_page.h"
 #include "harness/report/stage_bars_plot.h"
@@ -83,7 +84,10 @@ Status fill(const ReportInputs& inputs, const fs::path& folder, const ChosenCell
     }
     accuracies.push_back(std::move(figures));
   }
-  return write_file_atomically(folder / "report.md", report_page(grids, accuracies));
+  const std::string markdown = report_page(grids, accuracies, inputs.stabilities, inputs.tables);
+  const std::string html = report_html(inputs);
+  const FileContent pages[] = {{folder / "report.md", markdown}, {folder / "report.html", html}};
+  return write_files_atomically(pages);
 }
 
 }  // namespace

@@ -72,6 +72,11 @@ TEST_CASE("cli: report draws the grid heat map, stage bars and time against erro
   CHECK(page.find("](stages-building.png)") != std::string::npos);
   CHECK(page.find("](pareto-stress-cantilever.png)") != std::string::npos);
   CHECK(page.find("### Stages of cell 20 x 5") != std::string::npos);  // the largest cell by default
+  // The interactive page beside it, holding both files.
+  const std::string html = slurp(out / "report.html");
+  CHECK(html.rfind("<!doctype html>", 0) == 0);
+  CHECK(html.find("\"file\":\"" + grid.string() + "\"") != std::string::npos);
+  CHECK(html.find("\"file\":\"" + accuracy.string() + "\"") != std::string::npos);
 
   // A chosen cell, and a second run replaces the folder as a whole.
   const auto again = run_cli("report " + grid.string() + " --out " + out.string() + " --cell 10,5");
@@ -84,6 +89,39 @@ TEST_CASE("cli: report draws the grid heat map, stage bars and time against erro
   CHECK(entries == 4);  // grid.json, grid.csv, accuracy.json, report
 }
 
+TEST_CASE("cli: report reads stability and table results, and a hostile case name stays data in report.html",
+          "[cli][report]") {
+  const auto dir = scratch("kinds");
+  const auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return (dir / name).string();
+  };
+  const std::string grid = write("grid.json", R"({"schema_version": 1, "case": {"name": "</script><script>alert(1)</script>"},
+      "budget_ms": 5, "cells": [{"prefracture": 1, "runtime": 2, "worst_frame_ms": 1.0, "within_budget": true,
+      "stages_ms": {"physics": 1.0}}]})");
+  const std::string stability = write("stability.json", R"({"quick": true, "time_limit_s": 60, "results": [
+      {"hazard": "thin-plate", "algorithm": "plane-slice", "kind": "fracture", "outcome": "VALID", "detail": "",
+       "worst_error": 1e-12, "fragments": 8, "time_ms": 3.5}]})");
+  const std::string table = write("table.json", R"({"schema_version": 1, "kind": "table", "repetitions": 1, "rows": [
+      {"mesh": "cube.off", "triangles": 12, "algorithm": "voronoi", "fragments": 4, "produced": 4, "time_ms": 0.5,
+       "samples_ms": [0.5], "figures": {"volume_error": 0, "all_closed": true}},
+      {"mesh": "cube.off", "triangles": 12, "algorithm": "fem-lite", "fragments": 4, "refused": "too thin"}]})");
+  const auto out = dir / "report";
+  const auto r = shatter::test::run_cli_argv({"report", grid, stability, table, "--out", out.string()});
+  INFO(r.err);
+  REQUIRE(r.exit_code == 0);
+  CHECK(r.out.find("1 grid, 0 accuracy, 1 stability and 1 table file(s)") != std::string::npos);
+  const std::string md = slurp(out / "report.md");
+  CHECK(md.find("## Stability verdicts") != std::string::npos);
+  CHECK(md.find("| thin-plate | plane-slice | fracture | VALID |") != std::string::npos);
+  CHECK(md.find("| cube.off | fem-lite | 4 | refused: too thin |  |") != std::string::npos);
+  const std::string html = slurp(out / "report.html");
+  CHECK(html.find("alert(1)</script>") == std::string::npos);
+  CHECK(html.find(R"(\u003c/script\u003e\u003cscript\u003ealert(1)\u003c/script\u003e)") != std::string::npos);
+  CHECK(html.find(R"("hazard":"thin-plate")") != std::string::npos);
+  CHECK(html.find(R"("kind":"table")") != std::string::npos);
+}
+
 TEST_CASE("cli: report refuses malformed JSON with exit 2 naming the file and key, and leaves no folder", "[cli][report]") {
   const auto dir = scratch("bad");
   const auto write = [&](const std::string& name, const std::string& text) {
@@ -94,12 +132,16 @@ TEST_CASE("cli: report refuses malformed JSON with exit 2 naming the file and ke
   const std::string no_key = write("nokey.json", R"({"case": {"name": "x"}, "budget_ms": 5, "cells": [{"prefracture": 1, "runtime": 2, "within_budget": true, "stages_ms": {}}]})");
   const std::string wrong = write("wrong.json", R"({"kind": "accuracy", "points": [{"family": "fracture", "case": "a", "algorithm": "b", "knob": "k", "time_ms": "fast", "error": 0, "pareto": true}]})");
   const std::string other = write("other.json", R"({"hello": 1})");
+  const std::string newer = write("newer.json", R"({"schema_version": 2, "case": {"name": "x"}, "budget_ms": 5, "cells": []})");
+  const std::string bad_row = write("badrow.json", R"({"results": [{"hazard": "h", "algorithm": "a"}]})");
   const auto out = dir / "report";
   const std::pair<std::string, std::string> cases[] = {
       {broken, "broken.json"},
       {no_key, "cells[0].worst_frame_ms"},
       {wrong, "points[0].time_ms"},
       {other, "other.json"},
+      {newer, "newer.json: schema_version 2: this shatterbench reads results of version 1"},
+      {bad_row, "badrow.json: results[0]"},
       {(dir / "missing.json").string(), "missing.json"},
   };
   for (const auto& [file, words] : cases) {

@@ -1,0 +1,66 @@
+# The report page's JavaScript (docs/report.md, "How the page is built"): the packages pinned in
+# web/package-lock.json are installed with `npm ci` into the build folder (never into the source tree),
+# web/src/report/main.js is bundled by esbuild into ${CMAKE_BINARY_DIR}/web/report.{js,css}, and the
+# bundle becomes a generated C++ source of shatter_harness (cmake/embed_report_bundle.cmake). Editing a
+# file under web/src bundles again; editing package*.json installs again.
+find_program(SHATTER_NODE node)
+find_program(SHATTER_NPM npm)
+if(NOT SHATTER_NODE OR NOT SHATTER_NPM)
+  message(FATAL_ERROR "node and npm are needed to bundle the report page (web/): scripts/install-deps installs them")
+endif()
+
+set(SHATTER_WEB_DIR ${CMAKE_BINARY_DIR}/web)
+file(MAKE_DIRECTORY ${SHATTER_WEB_DIR})
+set(SHATTER_WEB_INSTALLED ${SHATTER_WEB_DIR}/node_modules/.shatter-npm-ci.stamp)
+add_custom_command(
+  OUTPUT ${SHATTER_WEB_INSTALLED}
+  COMMAND ${CMAKE_COMMAND} -E copy ${PROJECT_SOURCE_DIR}/web/package.json ${PROJECT_SOURCE_DIR}/web/package-lock.json
+          ${SHATTER_WEB_DIR}
+  # --ignore-scripts: no package runs code at install; puppeteer-core downloads no browser in any case.
+  COMMAND ${CMAKE_COMMAND} -E env PUPPETEER_SKIP_DOWNLOAD=1 ${SHATTER_NPM} ci --ignore-scripts --no-audit --no-fund
+          --loglevel=error
+  COMMAND ${CMAKE_COMMAND} -E touch ${SHATTER_WEB_INSTALLED}
+  WORKING_DIRECTORY ${SHATTER_WEB_DIR}
+  DEPENDS ${PROJECT_SOURCE_DIR}/web/package.json ${PROJECT_SOURCE_DIR}/web/package-lock.json
+  COMMENT "npm ci: the report page's pinned packages (web/package-lock.json) into ${SHATTER_WEB_DIR}"
+  VERBATIM)
+
+file(GLOB_RECURSE SHATTER_WEB_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/web/src/*.js
+     ${PROJECT_SOURCE_DIR}/web/src/*.css)
+add_custom_command(
+  OUTPUT ${SHATTER_WEB_DIR}/report.js ${SHATTER_WEB_DIR}/report.css
+  # NODE_PATH: the sources import "uplot" from the build folder's node_modules.
+  COMMAND ${CMAKE_COMMAND} -E env NODE_PATH=${SHATTER_WEB_DIR}/node_modules
+          ${SHATTER_NODE} ${SHATTER_WEB_DIR}/node_modules/esbuild/bin/esbuild
+          ${PROJECT_SOURCE_DIR}/web/src/report/main.js --bundle --minify --format=iife --charset=ascii
+          --target=es2020 --outfile=${SHATTER_WEB_DIR}/report.js --log-level=warning
+  DEPENDS ${SHATTER_WEB_INSTALLED} ${SHATTER_WEB_SOURCES}
+  COMMENT "esbuild: the report page's script and style (web/src/report)"
+  VERBATIM)
+
+# The licence of every package the bundle holds goes into the page (uPlot's MIT licence asks for it).
+set(SHATTER_WEB_BUNDLED_PACKAGES uplot)
+set(SHATTER_WEB_NOTICES ${SHATTER_WEB_DIR}/notices.txt)
+add_custom_command(
+  OUTPUT ${SHATTER_WEB_NOTICES}
+  COMMAND ${CMAKE_COMMAND} -DNODE_MODULES=${SHATTER_WEB_DIR}/node_modules "-DPACKAGES=${SHATTER_WEB_BUNDLED_PACKAGES}"
+          -DOUT=${SHATTER_WEB_NOTICES} -P ${PROJECT_SOURCE_DIR}/cmake/web_notices.cmake
+  DEPENDS ${SHATTER_WEB_INSTALLED} ${PROJECT_SOURCE_DIR}/cmake/web_notices.cmake
+  COMMENT "The licences of the report page's bundled packages"
+  VERBATIM)
+
+set(SHATTER_REPORT_BUNDLE_SOURCE ${CMAKE_BINARY_DIR}/generated/report_bundle.cpp)
+add_custom_command(
+  OUTPUT ${SHATTER_REPORT_BUNDLE_SOURCE}
+  COMMAND ${CMAKE_COMMAND} -DSCRIPT=${SHATTER_WEB_DIR}/report.js -DSTYLE=${SHATTER_WEB_DIR}/report.css
+          -DLICENSES=${SHATTER_WEB_NOTICES} -DOUT=${SHATTER_REPORT_BUNDLE_SOURCE}
+          -P ${PROJECT_SOURCE_DIR}/cmake/embed_report_bundle.cmake
+  DEPENDS ${SHATTER_WEB_DIR}/report.js ${SHATTER_WEB_DIR}/report.css ${SHATTER_WEB_NOTICES}
+          ${PROJECT_SOURCE_DIR}/cmake/embed_report_bundle.cmake
+  COMMENT "Embedding the report page's bundle in ${SHATTER_REPORT_BUNDLE_SOURCE}"
+  VERBATIM)
+# One target runs the commands; shatter_harness waits for it (two targets sharing a custom command's
+# output could run it twice at once in a parallel make).
+add_custom_target(shatter_report_bundle DEPENDS ${SHATTER_REPORT_BUNDLE_SOURCE})
+target_sources(shatter_harness PRIVATE ${SHATTER_REPORT_BUNDLE_SOURCE})
+add_dependencies(shatter_harness shatter_report_bundle)
