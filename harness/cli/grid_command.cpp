@@ -308,8 +308,9 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
   const bool gate_failed = (!instructions && !grid->passed()) || checks_failed;
   if (o.update_baseline && gate_failed)
     std::fprintf(stderr, "shatterbench: baseline %s not updated: the budget gate failed\n", json_path.string().c_str());
+  // One context for every output of the run: the recorded run is the --json file's run, byte for byte.
+  report.context = current_context();
   if (!json_path.empty() && !(o.update_baseline && gate_failed)) {
-    report.context = current_context();
     std::string frames;
     if (o.record_frames) {
       // Lent to the encoder and given back: the JSON's block describes them.
@@ -330,7 +331,6 @@ int run_grid_command(const GridCommandOptions& o, const Registries& registries) 
     if (Status s = write_files_atomically(set); !s) return fail_input("--json: " + s.error().message);
     if (o.update_baseline) std::fprintf(stderr, "shatterbench: baseline %s updated\n", json_path.string().c_str());
   }
-  report.context = current_context();
   if (!o.gbench.empty()) {
     const std::string format = o.gbench_aggregates_only ? "gbench-aggregates" : "gbench";
     if (Status s = write_file_atomically(o.gbench, make_grid_reporter(format)->render(report)); !s)
