@@ -2,6 +2,7 @@
 
 #include "algorithms/core/bounded_read.h"
 #include "harness/limits.h"
+#include "harness/results/fnv1a.h"
 #include "harness/results/grid_reader.h"
 #include "harness/results/json_finite.h"
 
@@ -18,12 +19,7 @@ namespace {
 using Json = nlohmann::ordered_json;
 
 std::string content_id(const std::string& text) {
-  std::uint64_t h = 14695981039346656037ULL;
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ULL;
-  }
-  return fmt::format("{:016x}{:08x}", h, static_cast<std::uint32_t>(text.size()));
+  return fmt::format("{:016x}{:08x}", fnv1a(text), static_cast<std::uint32_t>(text.size()));
 }
 
 /// Figures a run reports about itself that are costs: a larger value is worse. Every other figure of

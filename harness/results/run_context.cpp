@@ -1,5 +1,7 @@
 #include "harness/results/run_context.h"
 
+#include "harness/results/fnv1a.h"
+
 #include <fmt/core.h>
 
 #include <array>
@@ -74,11 +76,8 @@ std::string host_name() {
 }  // namespace
 
 std::string context_fingerprint(const RunContext& c) {
-  std::uint64_t hash = 0xcbf29ce484222325ULL;  // FNV-1a 64 offset basis
-  const auto add = [&hash](std::string_view field) {
-    for (unsigned char byte : field) hash = (hash ^ byte) * 0x100000001b3ULL;  // FNV prime
-    hash = (hash ^ 0x1fU) * 0x100000001b3ULL;
-  };
+  std::uint64_t hash = kFnv1aBasis;
+  const auto add = [&hash](std::string_view field) { hash = fnv1a_field(field, hash); };
   for (const std::string* field : {&c.build_type, &c.compiler, &c.flags, &c.cgal_version,
                                    &c.eigen_version, &c.bullet_version, &c.cpu_model})
     add(*field);

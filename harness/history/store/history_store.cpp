@@ -3,6 +3,7 @@
 #include "harness/history/store/history_schema.h"
 #include "harness/history/store/postgres_connection.h"
 #include "harness/history/store/sqlite_connection.h"
+#include "harness/results/fnv1a.h"
 #include "harness/results/sample_statistics.h"
 
 #include <fmt/chrono.h>
@@ -117,15 +118,9 @@ const char* better_name(Better b) {
 }
 
 std::int64_t series_id(const SeriesKey& key) {
-  std::uint64_t h = 14695981039346656037ULL;
-  for (const std::string* field : {&key.kind, &key.case_name, &key.fingerprint, &key.subject, &key.what, &key.metric}) {
-    for (unsigned char c : *field) {
-      h ^= c;
-      h *= 1099511628211ULL;
-    }
-    h ^= 0x1f;
-    h *= 1099511628211ULL;
-  }
+  std::uint64_t h = kFnv1aBasis;
+  for (const std::string* field : {&key.kind, &key.case_name, &key.fingerprint, &key.subject, &key.what, &key.metric})
+    h = fnv1a_field(*field, h);
   return static_cast<std::int64_t>(h);
 }
 
