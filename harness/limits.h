@@ -39,6 +39,15 @@ inline constexpr std::int64_t kMaxRecordedFrames = 8'000'000;
 /// the first frame past it.
 inline constexpr std::int64_t kMaxRecordedPoses = 2'000'000;
 
+/// The 3D views of one report (`report` with fragments folders, docs/report.md "Limits"): at most this
+/// many fragments and triangles over every folder it embeds; past either, the report is refused with
+/// one line (the page would pass tens of megabytes and draw too slowly to orbit). A 1 M-triangle mesh
+/// fractured is past it: show it with fewer or smaller meshes.
+inline constexpr std::int64_t kMaxReportFragments = 5'000;
+inline constexpr std::int64_t kMaxReportTriangles = 500'000;
+/// The recorded frames one report embeds for playback (`grid --record-frames` sidecars), bytes.
+inline constexpr std::uint64_t kMaxReportRecordingBytes = 16ULL << 20;
+
 /// Runtime pieces one run can make: pre-fracture count x runtime count of a cell (every fragment
 /// hit). Each piece is a mesh, a convex hull and a rigid body, a few KB: about 5 GB at the limit.
 inline constexpr std::int64_t kMaxRunPieces = 1'000'000;

@@ -191,6 +191,17 @@ void add_corner(Primitive& p, const Mesh& mesh, std::size_t f, int k, const Vec3
   if (layout.tangents) p.tangents.insert(p.tangents.end(), values.begin() + static_cast<std::ptrdiff_t>(at), values.end());
 }
 
+/// Primitive keys of a fragment without material slots (slots are >= 0).
+constexpr std::int32_t kPlainCut = -2;
+constexpr std::int32_t kPlainSurface = -1;
+
+/// The material of the cut faces of fragments without material slots: what prepare_cut_faces gives a
+/// mesh with slots (attribute_transfer.h), so cut faces read as the inside of the solid either way.
+const MaterialSlot& plain_interior_slot() {
+  static const MaterialSlot slot{.name = "interior", .base_color = {0.5, 0.5, 0.5, 1.0}, .base_color_texture = {}, .base_color_image = {}};
+  return slot;
+}
+
 /// The glTF mesh of `fragment` (its primitives), or an error naming it.
 Result<json> mesh_of(const Fragment& fragment, const std::string& name, GlbBuilder& glb, MaterialTable& materials) {
   const Mesh& mesh = fragment.mesh;
@@ -199,11 +210,17 @@ Result<json> mesh_of(const Fragment& fragment, const std::string& name, GlbBuild
     if (!p.allFinite()) return Error{name + ": a vertex is not finite"};
   for (const double v : attr.corners)
     if (!std::isfinite(v)) return Error{name + ": a corner attribute is not finite"};
-  // Faces grouped by material slot, in slot order (-1: no slots).
+  // Faces grouped by material slot, in slot order. Without slots, the surface (and repair) faces are
+  // kPlainSurface with glTF's default material and the cut faces kPlainCut with the plain interior one.
   std::map<std::int32_t, Primitive> primitives;
   for (std::size_t f = 0; f < mesh.triangles.size(); ++f) {
-    std::int32_t slot = attr.materials.empty() ? -1 : attr.materials[f];
-    if (slot >= static_cast<std::int32_t>(attr.slots.size())) slot = -1;  // not a slot: the default material
+    std::int32_t slot = kPlainSurface;
+    if (!attr.materials.empty()) {
+      slot = attr.materials[f];
+      if (slot >= static_cast<std::int32_t>(attr.slots.size())) slot = kPlainSurface;  // not a slot: the default material
+    } else if (mesh.tags[f] == FaceTag::cut) {
+      slot = kPlainCut;
+    }
     const Triangle& t = mesh.triangles[f];
     const Vec3 face_normal = (mesh.vertices[static_cast<std::size_t>(t[1])] - mesh.vertices[static_cast<std::size_t>(t[0])])
                                  .cross(mesh.vertices[static_cast<std::size_t>(t[2])] - mesh.vertices[static_cast<std::size_t>(t[0])]);
@@ -221,6 +238,7 @@ Result<json> mesh_of(const Fragment& fragment, const std::string& name, GlbBuild
     if (attr.layout.tangents) attributes["TANGENT"] = glb.float_accessor(p.tangents, 4, "VEC4", false);
     json primitive = {{"attributes", std::move(attributes)}, {"indices", glb.index_accessor(p.indices)}, {"mode", 4}};
     if (slot >= 0) primitive["material"] = materials.material_of(attr.slots[static_cast<std::size_t>(slot)], glb);
+    if (slot == kPlainCut) primitive["material"] = materials.material_of(plain_interior_slot(), glb);
     out.push_back(std::move(primitive));
   }
   return out;
@@ -244,7 +262,9 @@ Status write_fragments_glb(const std::filesystem::path& path, std::span<const Fr
     std::snprintf(name, sizeof name, "fragment_%03zu", i);
     const Vec3& c = fragments[i].mass.centroid;
     if (!c.allFinite()) return Error{path.string() + ": " + name + ": the centroid is not finite"};
-    json node = {{"name", name}, {"translation", {c.x(), c.y(), c.z()}}};
+    const double volume = fragments[i].mass.volume;
+    if (!std::isfinite(volume)) return Error{path.string() + ": " + name + ": the volume is not finite"};
+    json node = {{"name", name}, {"translation", {c.x(), c.y(), c.z()}}, {"extras", {{"volume", volume}}}};
     if (!fragments[i].mesh.triangles.empty()) {
       Result<json> primitives = mesh_of(fragments[i], path.string() + ": " + name, glb, materials);
       if (!primitives) return primitives.error();

@@ -9,7 +9,8 @@
 ///
 /// Layout: one node per fragment, named `fragment_NNN` (NNN from 000, as the OBJ files), its
 /// `translation` the fragment's centroid (Fragment::mass.centroid) and its mesh's positions relative
-/// to it, so every fragment sits where it was and pivots about its centre of mass. Each mesh has one
+/// to it, so every fragment sits where it was and pivots about its centre of mass; its `extras.volume`
+/// the fragment's volume (m^3, Fragment::mass.volume). Each mesh has one
 /// primitive (triangles, indexed, uint32) per material its faces use; corners with equal position and
 /// attributes share a vertex. Accessors (float32, as glTF requires for these): POSITION with min and
 /// max; NORMAL, normalised (the flat face normal when the mesh has no normals); TEXCOORD_n per UV set,
@@ -18,7 +19,9 @@
 /// fragments, used or not (the interior material always included), in slot order, with pbrMetallicRoughness
 /// baseColorFactor, metallicFactor 0, alphaMode BLEND when alpha < 1, and baseColorTexture (TEXCOORD_0)
 /// whose image is embedded in the binary chunk when the slot holds its bytes, else referenced by the
-/// slot's file path as a relative URI. A fragment without material slots uses glTF's default material.
+/// slot's file path as a relative URI. A fragment without material slots has up to two primitives:
+/// its surface (and repair) faces with glTF's default material, its cut faces with material
+/// `interior` (mid grey, as prepare_cut_faces dresses them), so a viewer tells the two apart.
 
 #include "algorithms/core/fragment.h"
 #include "algorithms/core/result.h"

@@ -58,10 +58,6 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
 
   const FractureMetrics m = fracture_metrics(solid->mesh, solid->mass, *fragments, o.fragments);
   const AttributeMetrics a = attribute_metrics(solid->mesh, *fragments);
-  if (!o.out.empty()) {
-    if (Status s = write_fragments(o.out, *fragments, std::filesystem::path(o.mesh).parent_path()); !s)
-      return fail_input(s.error().message);
-  }
   nlohmann::ordered_json input = {{"file", o.mesh}};
   input.update(input_solid_json(*solid));
   const nlohmann::ordered_json out = {
@@ -80,6 +76,13 @@ int run_fracture(const FractureOptions& o, const Registries& registries) {
         {"min_fragment_volume", m.min_fragment_volume},
         {"attributes", attribute_metrics_json(a)}}},
   };
+  if (!o.out.empty()) {
+    // The folder says what made it (report groups and labels folders by it).
+    nlohmann::ordered_json summary = {{"kind", "fracture"}, {"schema_version", 1}};
+    summary.update(out);
+    if (Status s = write_fragments(o.out, *fragments, std::filesystem::path(o.mesh).parent_path(), summary.dump(1) + "\n"); !s)
+      return fail_input(s.error().message);
+  }
   std::cout << out.dump(2) << '\n';
   // The result is printed either way; a result its own figures call invalid is not a success.
   std::vector<std::string> failed = failed_fracture_checks(m, acceptance_for(**fracturer));

@@ -28,10 +28,10 @@ int run_report(const ReportOptions& o) {
   ChosenCell cell;
   if (!o.cell.empty()) cell = std::pair(o.cell[0], o.cell[1]);
   if (Status s = write_report(*inputs, o.out, cell); !s) return fail_input(s.error().message);
-  std::cout << fmt::format("report: {} grid, {} accuracy, {} stability and {} table file(s) -> {}/report.md, "
-                           "{}/report.html\n",
+  std::cout << fmt::format("report: {} grid, {} accuracy, {} stability and {} table file(s), {} fragments folder(s) "
+                           "-> {}/report.md, {}/report.html\n",
                            inputs->grids.size(), inputs->accuracies.size(), inputs->stabilities.size(),
-                           inputs->tables.size(), o.out, o.out);
+                           inputs->tables.size(), inputs->fragments.size(), o.out, o.out);
   return exit_ok;
 }
 
@@ -42,7 +42,8 @@ void add_report_command(CLI::App& app, int& exit_code) {
   CLI::App* cmd = app.add_subcommand(
       "report", "Draw a report (heat map, stage bars, time against error, tables; report.md and report.html) from grid, "
       "accuracy, stability and table results");
-  cmd->add_option("results", o->files, "Results files: grid, accuracy, stability and table JSON (their --json)")
+  cmd->add_option("results", o->files, "Results files: grid, accuracy, stability and table JSON (their --json), and fragments folders "
+                  "(fracture --out, table --out) for the 3D views")
       ->required();
   cmd->add_option("--out", o->out, "Report folder (replaced as a whole when the report is complete)")->required();
   cmd->add_option("--cell", o->cell, "Grid cell of the stage bars: PREFRACTURE,RUNTIME (default: the largest)")

@@ -6,6 +6,8 @@
 #include "harness/cli/command.h"
 #include "harness/cli/history_access.h"
 #include "harness/output/atomic_file.h"
+#include "harness/output/output_folder.h"
+#include "harness/results/fragment_writer.h"
 #include "harness/output/output_targets.h"
 #include "harness/results/run_context.h"
 #include "harness/metrics/fracture_acceptance.h"
@@ -36,8 +38,56 @@ struct TableOptions {
   bool no_repair = false;
   double cap_uv_scale = 0.0;  // 0: the default
   std::string json;           // --json: the table results JSON (docs/results.md)
+  std::string out;            // --out: every row's fragments of seed 1, one fragments folder each
   RecordFlags record;         // --record, --db
 };
+
+/// One row's fragments of seed 1, for `--out`.
+struct FragmentsFolder {
+  std::string sub;                  // DIR/<mesh index>-<mesh file>/<requested>/<fracturer>
+  std::string mesh;                 // the mesh file as given
+  std::vector<Fragment> fragments;  // of seed 1
+  double time_ms = 0.0;             // the row's median
+  FractureMetrics metrics;          // of seed 1
+  std::string algorithm;
+  int requested = 0;
+};
+
+/// The fragments folder summary of one row (docs/results.md, "Fragments folder").
+std::string folder_summary(const FragmentsFolder& f) {
+  const nlohmann::ordered_json j = {
+      {"kind", "fracture"},
+      {"schema_version", 1},
+      {"algorithm", f.algorithm},
+      {"fragments", f.fragments.size()},
+      {"requested", f.requested},
+      {"seed", 1},
+      {"time_ms", f.time_ms},
+      {"input", {{"file", f.mesh}}},
+      {"metrics",
+       {{"volume_error", f.metrics.volume_error},
+        {"all_closed", f.metrics.all_closed},
+        {"partition_error", f.metrics.partition_error},
+        {"area_error", f.metrics.area_error},
+        {"min_fragment_volume", f.metrics.min_fragment_volume}}},
+  };
+  return j.dump(1) + "\n";
+}
+
+/// Writes `dir` holding one fragments folder per row, whole or not at all.
+Status write_fragments_folders(const std::filesystem::path& dir, const std::vector<FragmentsFolder>& folders) {
+  return write_folder_atomically(dir, [&](const std::filesystem::path& staging) -> Status {
+    for (const FragmentsFolder& f : folders) {
+      const std::filesystem::path target = staging / f.sub;
+      std::error_code ec;
+      std::filesystem::create_directories(target, ec);
+      if (ec) return Error{target.string() + ": cannot create: " + ec.message()};
+      if (Status s = write_fragment_files(target, f.fragments, std::filesystem::path(f.mesh).parent_path(), folder_summary(f)); !s)
+        return s;
+    }
+    return {};
+  });
+}
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -46,7 +96,9 @@ double median(std::vector<double> v) {
 }
 
 int run_table(TableOptions o, const Registries& r) {
-  if (Status s = check_outputs({{"--json", o.json}}); !s) return fail_input(s.error().message);
+  const std::vector<std::filesystem::path> inputs(o.meshes.begin(), o.meshes.end());
+  if (Status s = check_outputs({{"--json", o.json}, {"--out", o.out, true}}, baseline_folders(), inputs); !s)
+    return fail_input(s.error().message);
   if (Status s = check_record_target(o.record); !s) return fail_input(s.error().message);
   if (o.algorithms.empty()) o.algorithms = r.fracturers.names();
   // A fracturer whose code failed to make it (a plugin's factory threw or gave a null) is a failed row
@@ -70,6 +122,7 @@ int run_table(TableOptions o, const Registries& r) {
     solids.push_back(std::move(*s));
   }
 
+  std::vector<FragmentsFolder> folders;  // --out: written together at the end
   std::vector<std::string> failed;  // checks failed by rows, named by mesh, fracturer and count
   nlohmann::ordered_json json_rows = nlohmann::ordered_json::array();
   SelfIntersectionVerdicts verdicts;  // each mesh's input check runs once for every row and repetition
@@ -123,6 +176,9 @@ int run_table(TableOptions o, const Registries& r) {
         }
         rows.push_back({candidate.name, {}, false, median(times), times, first.size(),
                         fracture_metrics(solid.mesh, solid.mass, first, n), acceptance_for(*fracturer)});
+        if (!o.out.empty())
+          folders.push_back({fmt::format("{}-{}/{}/{}", m, safe_file_name(mesh_name), n, safe_file_name(candidate.name)),
+                             o.meshes[m], std::move(first), rows.back().ms, rows.back().metrics, candidate.name, n});
       }
       double fastest = std::numeric_limits<double>::infinity();
       for (const Row& row : rows)
@@ -179,6 +235,8 @@ int run_table(TableOptions o, const Registries& r) {
     if (const int code = record_if_asked(o.record, text, o.json.empty() ? "table.json" : o.json); code != exit_ok)
       return code;
   }
+  if (!o.out.empty())
+    if (Status s = write_fragments_folders(o.out, folders); !s) return fail_input("--out: " + s.error().message);
   // The table is printed whole; a row whose figures fail the checks makes the run fail.
   return print_failed_checks("", failed) > 0 ? exit_gate_failed : exit_ok;
 }
@@ -201,6 +259,9 @@ void add_table_command(CLI::App& app, int& exit_code, const Registries& registri
       ->check(CLI::Range(1, kMaxRepetitions))
       ->capture_default_str();
   cmd->add_option("--json", options->json, "Write the table results JSON here (docs/results.md)");
+  cmd->add_option("--out", options->out,
+                  "Folder for every row's fragments of seed 1, one fragments folder each (MESH/REQUESTED/FRACTURER; "
+                  "for report's 3D views), replaced as a whole");
   add_record_flags(cmd, options->record);
   cmd->callback([options, &exit_code, &registries] { exit_code = run_table(*options, registries); });
 }

@@ -3,6 +3,7 @@
 #include "algorithms/core/bounded_read.h"
 #include "harness/limits.h"
 #include "harness/results/json_finite.h"
+#include "harness/report/recorded_frames_input.h"
 
 #include <nlohmann/json.hpp>
 
@@ -192,11 +193,29 @@ void check_schema_version(const Json& j) {
                                kReportSchemaVersion)};
 }
 
+
 }  // namespace
 
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
   ReportInputs inputs;
+  std::uint64_t recording_bytes = 0;
+  std::int64_t fragments = 0, triangles = 0;
   for (const std::string& file : files) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(file, ec)) {
+      Result<std::vector<ReportFragments>> folders = find_fragments_folders(file);
+      if (!folders) return folders.error();
+      for (ReportFragments& f : *folders) {
+        fragments += static_cast<std::int64_t>(f.fragments);
+        triangles += static_cast<std::int64_t>(f.triangles);
+        if (fragments > kMaxReportFragments || triangles > kMaxReportTriangles)
+          return Error{fmt::format("{}: the 3D views would hold {} fragments and {} triangles, past the report's limit "
+                                   "of {} and {} (docs/report.md, Limits): give fewer folders or fracture a smaller mesh",
+                                   f.folder, fragments, triangles, kMaxReportFragments, kMaxReportTriangles)};
+        inputs.fragments.push_back(std::move(f));
+      }
+      continue;
+    }
     const Result<std::string> text = read_file_bounded(file, kMaxResultsFileBytes, "results file");
     if (!text) return text.error();
     Result<nlohmann::ordered_json> parsed = parse_results_json(*text, file);
@@ -211,6 +230,9 @@ Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {
       const std::string kind_text = kind != j.end() && kind->is_string() ? kind->get<std::string>() : std::string();
       if (j.contains("cells")) {
         inputs.grids.push_back(read_grid(j, file));
+        Result<std::string> recorded = read_grid_recording(j, file, recording_bytes);
+        if (!recorded) return recorded.error();
+        inputs.grids.back().recorded_frames = std::move(*recorded);
         inputs.grids.back().document = std::move(*parsed);
       } else if (kind_text == "table") {
         inputs.tables.push_back(read_table(j, file));

@@ -6,6 +6,7 @@
 
 #include "algorithms/core/result.h"
 #include "harness/accuracy/accuracy_point.h"
+#include "harness/report/fragments_folder.h"
 #include "harness/stability/hazard_outcome.h"
 
 #include <optional>
@@ -40,6 +41,9 @@ struct ReportGrid {
   double budget_ms = 0.0;      ///< budget_ms
   int frames = 0;              ///< frames per run (0 when absent)
   std::vector<ReportCell> cells;  ///< as in the file
+  /// The bytes of the recorded frames the file names (`recorded_frames.path`, `grid --record-frames`),
+  /// checked whole (recorded_frames.h); empty when it names none.
+  std::string recorded_frames;
 };
 
 /// One accuracy results file.
@@ -78,14 +82,17 @@ struct ReportInputs {
   std::vector<ReportAccuracy> accuracies;   ///< accuracy results
   std::vector<ReportStability> stabilities; ///< stability results
   std::vector<ReportTable> tables;          ///< table results
+  std::vector<ReportFragments> fragments;   ///< fragments folders (fracture --out, table --out)
 };
 
 /// The schema version of results files this build reads.
 inline constexpr int kReportSchemaVersion = 1;
 
-/// Reads every file; a grid file has `cells`, a table file `kind` "table" and `rows`, an accuracy file
+/// Reads every file; a folder is read as fragments folders (find_fragments_folders), and together they
+/// may hold at most kMaxReportFragments fragments and kMaxReportTriangles triangles. A grid file has `cells`, a table file `kind` "table" and `rows`, an accuracy file
 /// `kind` "accuracy" and `points`, a stability file `results`. A `schema_version` other than
-/// kReportSchemaVersion is refused. Errors name the file and, for a missing or mistyped key, the key
+/// kReportSchemaVersion is refused. A grid file's recorded frames are read from its own folder (at most
+/// kMaxReportRecordingBytes over the report). Errors name the file and, for a missing or mistyped key, the key
 /// path ("b.json: cells[2].worst_frame_ms: expected a number").
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files);
 

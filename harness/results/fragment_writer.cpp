@@ -30,18 +30,6 @@ std::vector<MaterialSlot> shared_slots(std::span<const Fragment> fragments) {
   return slots;
 }
 
-/// `name` with every character but letters, digits, '-', '_' and '.' made '_', never starting with
-/// '.', at most 100 characters: a file name that means the same on every system.
-std::string safe_file_name(const std::string& name) {
-  std::string out;
-  for (const char c : name.substr(0, 100)) {
-    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
-    out += plain ? c : '_';
-  }
-  if (out.empty() || out.front() == '.') out.insert(out.begin(), '_');
-  return out;
-}
-
 /// The textures of `slots` written into `staging/textures/`, and each textured slot's name mapped to
 /// the copy's path relative to the output folder (see write_fragments).
 Result<std::map<std::string, std::string>> copy_textures(const std::vector<MaterialSlot>& slots,
@@ -92,8 +80,26 @@ Result<std::map<std::string, std::string>> copy_textures(const std::vector<Mater
 
 }  // namespace
 
-Status write_fragments(const fs::path& dir, std::span<const Fragment> fragments, const fs::path& asset_folder) {
+std::string safe_file_name(const std::string& name) {
+  std::string out;
+  for (const char c : name.substr(0, 100)) {
+    const bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.';
+    out += plain ? c : '_';
+  }
+  if (out.empty() || out.front() == '.') out.insert(out.begin(), '_');
+  return out;
+}
+
+Status write_fragments(const fs::path& dir, std::span<const Fragment> fragments, const fs::path& asset_folder,
+                       const std::string& summary) {
   return write_folder_atomically(dir, [&](const fs::path& staging) -> Status {
+    return write_fragment_files(staging, fragments, asset_folder, summary);
+  });
+}
+
+Status write_fragment_files(const fs::path& staging, std::span<const Fragment> fragments, const fs::path& asset_folder,
+                            const std::string& summary) {
+  {
     std::vector<MaterialSlot> slots = shared_slots(fragments);
     Result<std::map<std::string, std::string>> textures = copy_textures(slots, asset_folder, staging);
     if (!textures) return textures.error();
@@ -114,9 +120,11 @@ Status write_fragments(const fs::path& dir, std::span<const Fragment> fragments,
       if (Status s = write_mtl(slots, staging / library); !s) return s;
     for (std::size_t i = 0; i < fragments.size(); ++i)
       if (Status s = write_obj(fragments[i].mesh, staging / fmt::format("fragment_{:03}.obj", i), library); !s) return s;
+    if (!summary.empty())
+      if (Status s = write_file_bytes(summary, staging / kFragmentsSummaryFile); !s) return s;
     // Always, attributes or not: one file a game engine or viewer opens with every fragment placed.
     return write_fragments_glb(staging / "fragments.glb", fragments);
-  });
+  }
 }
 
 }  // namespace shatter

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <span>
+#include <string>
 
 namespace shatter {
 
@@ -22,7 +23,23 @@ namespace shatter {
 /// `DIR/textures/` for the MTL and stays embedded in the glTF binary. A named image that is missing,
 /// outside `asset_folder` (asset_reference.h) or larger than kMaxTextureBytes is an error naming the
 /// material and the file, and nothing is written.
+///
+/// `summary`, when not empty, is written as `DIR/fracture.json`: what made the fragments (the fracture
+/// command's JSON with `kind` "fracture"; docs/results.md, "Fragments folder"), so that `report` can
+/// label and group the folder.
 Status write_fragments(const std::filesystem::path& dir, std::span<const Fragment> fragments,
-                       const std::filesystem::path& asset_folder = {});
+                       const std::filesystem::path& asset_folder = {}, const std::string& summary = {});
+
+/// The files of write_fragments written into `dir`, an existing empty folder that the caller makes
+/// whole or removes (a staging folder of write_folder_atomically); for outputs of several folders.
+Status write_fragment_files(const std::filesystem::path& dir, std::span<const Fragment> fragments,
+                            const std::filesystem::path& asset_folder, const std::string& summary);
+
+/// `name` with every character but letters, digits, '-', '_' and '.' made '_', never starting with
+/// '.', at most 100 characters: a file name that means the same on every system (never a path).
+std::string safe_file_name(const std::string& name);
+
+/// The name of the summary file in a fragments folder.
+inline constexpr const char* kFragmentsSummaryFile = "fracture.json";
 
 }  // namespace shatter

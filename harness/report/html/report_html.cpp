@@ -12,9 +12,10 @@ std::string report_html(const ReportInputs& inputs) {
   page.reserve(data.size() + report_script().size() + report_style().size() + 1024);
   page += "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
   page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
-  // Inline script and style only; nothing may be fetched (images as data: and blob: for later views).
+  // Inline script and style only; nothing may be fetched from anywhere but the page itself: the 3D
+  // views decode their embedded glTF binaries and textures from data: and blob: URLs.
   page += "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; script-src 'unsafe-inline'; "
-          "style-src 'unsafe-inline'; img-src data: blob:\">\n";
+          "style-src 'unsafe-inline'; img-src data: blob:; connect-src data: blob:\">\n";
   page += "<title>shatterbench report</title>\n";
   page += "<!--\nThe script of this page bundles these packages, under these licences:\n\n";
   page += report_licenses();

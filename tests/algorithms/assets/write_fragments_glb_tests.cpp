@@ -7,8 +7,12 @@
 #include <assimp/material.h>
 #include <assimp/scene.h>
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -172,4 +176,44 @@ TEST_CASE("glb writer: a fragment without attributes gets flat normals and the d
     const Vec3 n = (vec(mesh.mVertices[idx[1]]) - vec(mesh.mVertices[idx[0]])).cross(vec(mesh.mVertices[idx[2]]) - vec(mesh.mVertices[idx[0]]));
     for (int c = 0; c < 3; ++c) CHECK(vec(mesh.mNormals[idx[c]]).isApprox(n.normalized(), 1e-6));
   }
+}
+
+TEST_CASE("glb writer: a fragment without attributes keeps its cut faces apart, in the interior material, and its volume",
+          "[assets][glb]") {
+  const fs::path dir = fs::temp_directory_path() / "shatter_write_fragments_glb_plain_cut";
+  fs::create_directories(dir);
+  Fragment plain;
+  plain.mesh = make_box(Vec3(2, 1, 0.5), Vec3(3, 0, 0));  // volume 1 m^3: known without the writer
+  int cut = 0;
+  for (std::size_t f = 0; f < plain.mesh.triangles.size(); ++f) {
+    const Triangle& t = plain.mesh.triangles[f];
+    if (plain.mesh.vertices[t[0]].x() == 2.0 && plain.mesh.vertices[t[1]].x() == 2.0 && plain.mesh.vertices[t[2]].x() == 2.0) {
+      plain.mesh.tags[f] = FaceTag::cut;
+      ++cut;
+    }
+  }
+  REQUIRE(cut == 2);
+  plain.mass = mass_properties(plain.mesh);
+  const std::vector<Fragment> fragments = {plain};
+  REQUIRE(write_fragments_glb(dir / "plain.glb", fragments).ok());
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile((dir / "plain.glb").string(), 0);
+  REQUIRE(scene != nullptr);
+  REQUIRE(scene->mNumMeshes == 2);
+  std::map<std::string, unsigned> faces_by_material;
+  for (unsigned m = 0; m < scene->mNumMeshes; ++m) {
+    aiString name;
+    scene->mMaterials[scene->mMeshes[m]->mMaterialIndex]->Get(AI_MATKEY_NAME, name);
+    faces_by_material[name.C_Str()] += scene->mMeshes[m]->mNumFaces;
+  }
+  CHECK(faces_by_material["interior"] == 2);
+  CHECK(faces_by_material.size() == 2);
+  // The node's extras hold the volume, read back from the JSON chunk.
+  std::ifstream in(dir / "plain.glb", std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(bytes.size() > 20);
+  std::uint32_t json_length = 0;
+  std::memcpy(&json_length, bytes.data() + 12, 4);
+  const nlohmann::json doc = nlohmann::json::parse(bytes.substr(20, json_length));
+  CHECK(doc["nodes"][0]["extras"]["volume"].get<double>() == Approx(1.0).epsilon(1e-12));
 }

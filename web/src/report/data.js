@@ -4,14 +4,15 @@
 export const DATA_ELEMENT_ID = "shatterbench-data";
 
 /**
- * Reads and parses the data element of `doc`. The object holds four lists, each of
- * {file, results}: `grids`, `accuracy`, `stability`, `tables` (docs/report.md, "The data").
+ * Reads and parses the data element of `doc`. The object holds four lists of results files, each of
+ * {file, results}: `grids` (with `recorded_frames` when recorded), `accuracy`, `stability`, `tables`;
+ * and `fragments`, the fragments folders (docs/report.md, "The data").
  */
 export function readReportData(doc) {
   const element = doc.getElementById(DATA_ELEMENT_ID);
   if (!element) throw new Error(`the page has no #${DATA_ELEMENT_ID} element`);
   const data = JSON.parse(element.textContent);
-  for (const key of ["grids", "accuracy", "stability", "tables"]) {
+  for (const key of ["grids", "accuracy", "stability", "tables", "fragments"]) {
     if (!Array.isArray(data[key])) data[key] = [];
   }
   return data;

@@ -10,6 +10,10 @@ import { paretoChart, paretoGroups } from "./pareto.js";
 import { cellStageViews } from "./stage_bars.js";
 import { runsTable, stabilityTable } from "./tables.js";
 import { timeline } from "./timeline.js";
+import { fragmentGroups, fragmentsSection } from "./fragments_view.js";
+import { playback } from "./playback.js";
+import { readRecordedFrames } from "./recorded_frames.js";
+import { unpack } from "./inflate.js";
 
 function contextLine(results) {
   const c = results.context || {};
@@ -36,18 +40,30 @@ function gridSection(entry) {
   section.append(el("p", {}, `${cells.length} cells, ${over} over the ${formatNumber(results.budget_ms)} ms budget or failed; `
     + `${results.repetitions ?? "?"} repetition(s) of ${results.frames ?? "?"} frames per cell.`));
   const detail = el("div", { class: "cell-detail", "data-view": "cell-detail" });
+  // The recordings of `grid --record-frames`, read once; a cell with one gets its playback.
+  const recordings = entry.recorded_frames ? unpack(entry.recorded_frames).then(readRecordedFrames) : Promise.resolve([]);
+  if (entry.recorded_frames) section.append(el("p", { "data-recorded": "" }, "This file has recorded frames: open a recorded cell to play its event."));
+  let shown = 0;  // the latest selection wins when recordings arrive late
   const select = (cell, fromClick) => {
-    const view = timeline(cell, results.budget_ms);
-    detail.replaceChildren(view.element, ...cellStageViews(cell));
-    detail.dataset.cell = `${cell.prefracture} x ${cell.runtime}`;
-    view.mount();
-    markSelected(map, cell);
-    if (fromClick) detail.scrollIntoView({ block: "nearest" });
+    const token = ++shown;
+    return recordings.then((recs) => {
+      if (token !== shown) return;
+      const rec = recs.find((r) => r.prefracture === cell.prefracture && r.runtime === cell.runtime);
+      let player = null;
+      const view = timeline(cell, results.budget_ms, rec ? { onPick: (f) => player.show(f) } : {});
+      if (rec) player = playback(rec, results, (f) => view.showFrame(f));
+      detail.replaceChildren(view.element, ...(player ? [player.element] : []), ...cellStageViews(cell));
+      detail.dataset.cell = `${cell.prefracture} x ${cell.runtime}`;
+      view.mount();
+      if (player) player.mount(Math.max(0, cell.samples?.[rec.repetition]?.event_frame ?? 0));
+      markSelected(map, cell);
+      if (fromClick) detail.scrollIntoView({ block: "nearest" });
+    });
   };
   const map = heatMap(results, (cell) => select(cell, true));
   section.append(map, detail);
   const first = slowestCell(results);
-  return { element: section, mount: () => { if (first) select(first, false); } };
+  return { element: section, mount: () => (first ? select(first, false) : undefined) };
 }
 
 function accuracySection(entry) {
@@ -72,18 +88,24 @@ function render() {
     ...data.accuracy.map(accuracySection),
     ...data.stability.map((e) => tableSection("stability", "Stability verdicts", e, stabilityTable)),
     ...data.tables.map((e) => tableSection("table", "Fracture table", e, runsTable)),
+    ...fragmentGroups(data.fragments).map(fragmentsSection),
   ];
-  const counts = [[data.grids.length, "grid"], [data.accuracy.length, "accuracy"], [data.stability.length, "stability"], [data.tables.length, "table"]]
+  const counts = [[data.grids.length, "grid"], [data.accuracy.length, "accuracy"], [data.stability.length, "stability"], [data.tables.length, "table"],
+    [data.fragments.length, "fragments folder"]]
     .filter(([n]) => n > 0).map(([n, what]) => `${n} ${what}`);
   root.append(el("header", {},
     el("h1", {}, "shatterbench report"),
     el("p", { class: "note" }, `From ${counts.join(", ") || "no"} results file(s), read by shatterbench report. Views: docs/report.md.`)));
   for (const s of sections) root.append(s.element);
-  for (const s of sections) s.mount();
+  // 3D views load their glTF binaries asynchronously: `data-drawn` says when every view has drawn.
+  return Promise.all(sections.map((s) => s.mount()));
 }
 
 try {
-  render();
+  render().then(() => { document.body.dataset.drawn = "true"; }, (error) => {
+    document.body.dataset.drawn = "error";
+    console.error(error);
+  });
   document.body.dataset.ready = "true";
 } catch (error) {
   document.body.dataset.ready = "error";

@@ -53,12 +53,24 @@ function dashedLine(u, colour, [x0, y0, x1, y1], label, [lx, ly], align) {
  * horizontal one (when the y axis reaches it). Drawn on the canvas, not as series, so that they take no
  * part in the axes' ranges.
  */
-function markers(frame, budget) {
+function markers(frame, budget, playhead) {
   return {
     hooks: {
       draw: (u) => {
         const { left, top, width, height } = u.bbox;
         const px = devicePixelRatio;
+        if (playhead.frame >= 0) {
+          const x = Math.round(u.valToPos(playhead.frame, "x", true));
+          const ctx = u.ctx;
+          ctx.save();
+          ctx.strokeStyle = "#212529";
+          ctx.lineWidth = 2 * px;
+          ctx.beginPath();
+          ctx.moveTo(x, top);
+          ctx.lineTo(x, top + height);
+          ctx.stroke();
+          ctx.restore();
+        }
         if (frame >= 0) {
           const x = Math.round(u.valToPos(frame, "x", true));
           dashedLine(u, "#495057", [x, top, x, top + height], "event", [x + 4 * px, top + 12 * px], "left");
@@ -74,19 +86,21 @@ function markers(frame, budget) {
 
 /**
  * The timeline of `cell` of a grid results document (budget `budget` ms) in a new element, with the
- * uPlot chart made once the element is in the page (call `mount()` after appending). The element
+ * uPlot chart made once the element is in the page (call `mount()` after appending). With `onPick`,
+ * a click on the chart calls it with the frame under the pointer, and `showFrame(f)` draws the shown
+ * frame of a playback as a solid line (`data-playhead`). The element
  * carries `data-chart="timeline"`, `data-cell` ("P x R"), `data-marks` (one line per repetition with frames),
  * `data-frames`, `data-event-frame` and `data-stacked-stages` (stages stacked; 0 without per-frame
  * stage times).
  */
-export function timeline(cell, budget) {
+export function timeline(cell, budget, { onPick } = {}) {
   const title = `Cell ${cell.prefracture} x ${cell.runtime}: time per frame`;
   const figure = el("figure", { class: "chart timeline", "data-chart": "timeline", "data-cell": `${cell.prefracture} x ${cell.runtime}` },
     el("figcaption", { class: "chart-title" }, title));
   if (cell.failed !== undefined) {
     figure.dataset.marks = "0";
     figure.append(el("p", { class: "note" }, `This cell failed and has no frames: ${cell.failed}`));
-    return { element: figure, mount() {} };
+    return { element: figure, mount() {}, showFrame() {} };
   }
   const samples = (cell.samples || []).filter((s) => Array.isArray(s.frame_ms) && s.frame_ms.length > 0);
   const frames = Math.max(0, ...samples.map((s) => s.frame_ms.length));
@@ -108,7 +122,7 @@ export function timeline(cell, budget) {
   figure.append(host);
   if (frames === 0) {
     figure.append(el("p", { class: "note" }, "This cell has no per-frame samples."));
-    return { element: figure, mount() {} };
+    return { element: figure, mount() {}, showFrame() {} };
   }
 
   const x = Array.from({ length: frames }, (_, i) => i);
@@ -135,6 +149,8 @@ export function timeline(cell, budget) {
 
   // The y axis reaches the budget by default (how far under it the frames are); "fit" zooms to the frames.
   let fit = false;
+  const playhead = { frame: -1 };
+  let chart = null;
   const toggle = el("button", { type: "button", class: "scale-toggle", "data-action": "fit-frames" }, "Zoom to the frames");
   figure.insertBefore(toggle, host);
   return {
@@ -147,9 +163,16 @@ export function timeline(cell, budget) {
         axes: [{ label: "frame" }, { label: "ms", size: 60 }],
         series,
         legend: { live: true },
-        plugins: [markers(eventFrame, budget)],
+        plugins: [markers(eventFrame, budget, playhead)],
       };
-      const chart = new uPlot(options, data, host);
+      chart = new uPlot(options, data, host);
+      if (onPick) {
+        chart.over.style.cursor = "pointer";
+        chart.over.addEventListener("click", () => {
+          const f = Math.round(chart.posToVal(chart.cursor.left, "x"));
+          if (Number.isFinite(f) && f >= 0 && f < frames) onPick(f);
+        });
+      }
       toggle.addEventListener("click", () => {
         fit = !fit;
         toggle.textContent = fit ? "Show the budget" : "Zoom to the frames";
@@ -157,6 +180,11 @@ export function timeline(cell, budget) {
         chart.setData(data);
       });
       figure.dataset.yScale = "budget";
+    },
+    showFrame(f) {
+      playhead.frame = f;
+      figure.dataset.playhead = String(f);
+      if (chart) chart.redraw(false, false);
     },
   };
 }
