@@ -13,5 +13,7 @@ void add_history_changes_command(CLI::App& history, int& exit_code);
 void add_history_show_command(CLI::App& history, int& exit_code);
 /// `history gate` and `history ack`.
 void add_history_gate_commands(CLI::App& history, int& exit_code);
+/// `history report` (the dashboard page).
+void add_history_report_command(CLI::App& history, int& exit_code);
 
 }  // namespace shatter::cli
