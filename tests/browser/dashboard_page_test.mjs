@@ -13,8 +13,8 @@
 //    or request other than file:, data: or blob:; one card per series of the store, the points and the
 //    change points of each equal to the page's data, the change points in total equal to `history
 //    changes`; every drawn chart draws every point and change point; regressions first; a filter lists
-//    only the matching series; a hover reads the commit from the data. Screenshots go to --screenshots
-//    (and the top of the page to --docs-image when given).
+//    only the matching series; a hover reads the commit from the data; a page of no series says so.
+//    Screenshots go to --screenshots (and the top of the page to --docs-image when given).
 // 2. 1,000 commits x 500 series, the data made here and put into the same page: it opens, draws the
 //    first screen (charts only on screen, each downsampled to the pixel width, the hover reading the full
 //    data), and the time it takes is printed (a measurement, not a check).
@@ -339,6 +339,15 @@ async function main() {
     if (args.docsImage) await page.screenshot({ path: args.docsImage });
     await checkRecorded(page, data, store);
     await page.close();
+
+    // A filter that matches nothing: a page that says so.
+    const emptyOut = path.join(work, "dashboard-empty");
+    run(args.cli, ["history", "report", "--db", store.db, "--out", emptyOut, "--case", "no such case"]);
+    const empty = await openGuarded(browser, pathToFileURL(path.join(emptyOut, "dashboard.html")).href, "empty dashboard",
+      { width: 1240, height: 900 });
+    const emptyText = await empty.page.$eval("[data-empty]", (e) => e.textContent).catch(() => "");
+    check(emptyText.startsWith("No series"), `a page of no series does not say so: "${emptyText}"`);
+    await empty.page.close();
 
     // 1,000 commits x 500 series in the same page.
     const large = largeData(1000, 500);
