@@ -339,6 +339,45 @@ void NodeBlockCholesky::solve_blocks(double* x) const {
   }
 }
 
+template <int G>
+void NodeBlockCholesky::path_columns(int node, std::vector<int>& path, std::vector<double>& columns) const {
+  using Block = Eigen::Matrix<double, G, G>;
+  constexpr int kEntries = G * G;
+  for (int j = position_[static_cast<std::size_t>(node)]; j >= 0; j = parent_[static_cast<std::size_t>(j)]) path.push_back(j);
+  columns.assign(path.size() * kEntries, 0.0);
+  const auto at = [&](std::size_t i) { return Eigen::Map<Block>(columns.data() + i * kEntries); };
+  at(0).setIdentity();
+  // Column-oriented forward solve L Y = P over the path: column j of L has its rows among j's ancestors,
+  // all on the path, and both lists ascend, so one merge finds them.
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    const int j = path[i];
+    const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
+    const Block y = (inverse_jj * at(i)).eval();
+    at(i) = y;
+    std::size_t t = i + 1;
+    for (int q = column_start_[static_cast<std::size_t>(j)]; q < column_start_[static_cast<std::size_t>(j) + 1]; ++q) {
+      while (path[t] != rows_[static_cast<std::size_t>(q)]) ++t;
+      at(t).noalias() -= Eigen::Map<const Block>(blocks_.data() + static_cast<std::size_t>(q) * kEntries) * y;
+    }
+  }
+}
+
+void NodeBlockCholesky::inverse_factor_columns(int node, std::vector<int>& path, std::vector<double>& columns) const {
+  path.clear();
+  columns.clear();
+  if (!factorised_ || !analysed()) return;
+  assert(node >= 0 && node < nodes_);
+  switch (size_) {
+    case 1: path_columns<1>(node, path, columns); break;
+    case 2: path_columns<2>(node, path, columns); break;
+    case 3: path_columns<3>(node, path, columns); break;
+    case 4: path_columns<4>(node, path, columns); break;
+    case 5: path_columns<5>(node, path, columns); break;
+    case 6: path_columns<6>(node, path, columns); break;
+    default: break;
+  }
+}
+
 double NodeBlockCholesky::pivot_ratio() const {
   if (!factorised_ || !analysed()) return 0.0;
   // diagonal_ holds the inverses of L's diagonal blocks, whose diagonal entries are 1 / L_ii: the

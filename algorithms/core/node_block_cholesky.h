@@ -60,6 +60,15 @@ class NodeBlockCholesky {
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// The nodes in elimination order (AMD on the node graph), empty before analysis.
   [[nodiscard]] std::span<const int> node_order() const { return order_; }
+  /// Unknowns per node (g), 0 before analysis.
+  [[nodiscard]] int node_size() const { return size_; }
+  /// The g columns of L^-1 P, P the identity columns of the unknowns of `node` (original numbering),
+  /// on the only nodes where they can be nonzero: the elimination-tree path from the node to its root.
+  /// `path` receives the path's elimination positions (ascending), `columns` one g x g block
+  /// (column-major) per path entry. The cost is the path's share of L, not a triangular solve, so a
+  /// few nodes' block of K^-1 = (L^-1 P)^T (L^-1 P) is cheap (a capacitance matrix). Both empty when
+  /// not factorised.
+  void inverse_factor_columns(int node, std::vector<int>& path, std::vector<double>& columns) const;
 
  private:
   /// The analysis' arrays are all there (not so in a moved-from object).
@@ -75,6 +84,8 @@ class NodeBlockCholesky {
   bool factorize_blocks(const double* values, bool all_rows);
   template <int G>
   void solve_blocks(double* x) const;
+  template <int G>
+  void path_columns(int node, std::vector<int>& path, std::vector<double>& columns) const;
 
   bool factorised_ = false;  // the last factorisation succeeded
   int size_ = 0;       // g: unknowns per node

@@ -114,7 +114,7 @@ bool CascadeSolver::couplings_negligible() {
   return ok;
 }
 
-bool CascadeSolver::factorize(Block& block) {
+bool CascadeSolver::factorize(Block& block, bool correct) {
   if (block.factorised) return true;
   if (!block.analysed) {
     block.analysed = true;
@@ -125,15 +125,32 @@ bool CascadeSolver::factorize(Block& block) {
   const double* value = stiffness_->matrix().valuePtr();
   double* out = block.lower.valuePtr();
   for (std::size_t i = 0; i < block.source.size(); ++i) out[i] = value[block.source[i]];
+  const NodeBlockCholesky* node_blocks = block.cholesky->node_blocks();
+  if (correct && node_blocks && block.correction.has_base() &&
+      block.correction.update(*node_blocks, block.lower, kMaxCorrectedUnknowns)) {
+    block.corrected = true;
+    block.factorised = true;
+    return true;
+  }
+  block.corrected = false;
   block.factorised = block.cholesky->factorize(block.lower);
   block.failed = block.failed || !block.factorised;
+  if (block.factorised)
+    block.correction.reset(std::span<const double>(out, block.source.size()));
+  else
+    block.correction.clear();
   return block.factorised;
+}
+
+Eigen::VectorXd CascadeSolver::block_solve(const Block& block, const Eigen::VectorXd& b) const {
+  if (block.corrected && block.correction.active()) return block.correction.solve(*block.cholesky->node_blocks(), b);
+  return block.cholesky->solve(b);
 }
 
 std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, const GraphComponents& components,
                                                  std::span<const std::uint8_t> broken, std::span<const std::uint8_t> solve_now,
                                                  std::span<const double> loads, std::vector<double>& displacements,
-                                                 std::vector<BondForces>& forces) {
+                                                 std::vector<BondForces>& forces, bool continues) {
   if (!stiffness_) build(graph);
   for (const Block& block : blocks_)
     if (block.analysed && !block.direct) return std::nullopt;  // a CG block: the per-component path
@@ -159,36 +176,55 @@ std::optional<SolverReport> CascadeSolver::solve(const SupportGraph& graph, cons
           for (int q = 0; q < 6; ++q) f[i + q] = loads[6 * static_cast<std::size_t>(v) + static_cast<std::size_t>(q)];
 
   // As solve_linear's block path: loaded blocks solved, then refinement against the whole K, an
-  // unloaded block factorised only when its residual is above the round-off of f.
-  for (Block& block : blocks_) block.factorised = false;
+  // unloaded block factorised only when its residual is above the round-off of f. A continuing round
+  // first tries the blocks' corrections; if the refined residual is not within kMaxCorrectedResidual
+  // it refactorises and solves again.
+  if (!continues)
+    for (Block& block : blocks_) block.correction.clear();
   const double negligible = std::numeric_limits<double>::epsilon() * f.norm();
-  for (Block& block : blocks_) {
-    const Vector fb = gather(f, block.unknowns);
-    if (fb.squaredNorm() == 0.0) continue;
-    if (!factorize(block)) return std::nullopt;
-    const Vector x = block.cholesky->solve(fb);
-    for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] = x[static_cast<Eigen::Index>(i)];
-  }
-  double last = std::numeric_limits<double>::infinity();
-  std::optional<Vector> final_residual;  // set by a refinement that ended with it
-  for (int step = 0; step < settings_.refinement_steps; ++step) {
-    Vector r = sparse_residual(k, f, u);
-    const double now = r.norm();
-    if (!refinement_pays(last, now, settings_)) {
-      final_residual = std::move(r);
+  Vector r;
+  bool corrected = false;
+  for (const bool correct : {continues, false}) {
+    for (Block& block : blocks_) block.factorised = false, block.corrected = false;
+    u.setZero();
+    for (Block& block : blocks_) {
+      const Vector fb = gather(f, block.unknowns);
+      if (fb.squaredNorm() == 0.0) continue;
+      if (!factorize(block, correct)) return std::nullopt;
+      const Vector x = block_solve(block, fb);
+      for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] = x[static_cast<Eigen::Index>(i)];
+    }
+    double last = std::numeric_limits<double>::infinity();
+    std::optional<Vector> final_residual;  // set by a refinement that ended with it
+    for (int step = 0; step < settings_.refinement_steps; ++step) {
+      Vector step_r = sparse_residual(k, f, u);
+      const double now = step_r.norm();
+      if (!refinement_pays(last, now, settings_)) {
+        final_residual = std::move(step_r);
+        break;
+      }
+      last = now;
+      for (Block& block : blocks_) {
+        const Vector rb = gather(step_r, block.unknowns);
+        if (rb.norm() <= negligible) continue;
+        if (!factorize(block, correct)) return std::nullopt;
+        const Vector x = block_solve(block, rb);
+        for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] += x[static_cast<Eigen::Index>(i)];
+      }
+    }
+    if (!u.allFinite()) return std::nullopt;
+    r = final_residual ? std::move(*final_residual) : sparse_residual(k, f, u);
+    corrected = std::any_of(blocks_.begin(), blocks_.end(), [](const Block& b) { return b.corrected; });
+    if (!corrected) {
+      ++refactorised_rounds_;
       break;
     }
-    last = now;
-    for (Block& block : blocks_) {
-      const Vector rb = gather(r, block.unknowns);
-      if (rb.norm() <= negligible) continue;
-      if (!factorize(block)) return std::nullopt;
-      const Vector x = block.cholesky->solve(rb);
-      for (std::size_t i = 0; i < block.unknowns.size(); ++i) u[block.unknowns[i]] += x[static_cast<Eigen::Index>(i)];
+    if (r.norm() <= kMaxCorrectedResidual * f.norm()) {
+      ++corrected_rounds_;
+      break;
     }
+    for (Block& block : blocks_) block.correction.clear();  // refactorise: the retry must not correct
   }
-  if (!u.allFinite()) return std::nullopt;
-  const Vector r = final_residual ? std::move(*final_residual) : sparse_residual(k, f, u);
 
   // Per component, as if solved alone: residual against its own rows, its displacements, its forces.
   SolverReport report;

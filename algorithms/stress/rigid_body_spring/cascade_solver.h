@@ -15,9 +15,18 @@
 /// aside (the caller solves per component) when it does not apply: a block above the flop limit of
 /// the direct solve (CG territory), a factorisation that fails, or a coupling dropped between blocks
 /// that has grown above the decoupling tolerance once bonds broke.
+///
+/// A round that continues the rounds before it (its input is this solver's last output) does not
+/// refactorise a block whose changes since its last factorisation hold at most
+/// kMaxCorrectedUnknowns unknowns: it solves through that factor with a capacitance correction
+/// (capacitance_correction.h), refined against the whole K like every direct solve, and refactorises
+/// after all when the refined residual is above kMaxCorrectedResidual. Any other round refactorises
+/// (bit for bit a factorisation from scratch), so what a round gives depends only on the rounds since
+/// the one that broke the chain, never on what the solver solved before (docs/stress.md, section 3a).
 
 #include "algorithms/bonds/graph_components.h"
 #include "algorithms/stress/rigid_body_spring/analysis_pool.h"
+#include "algorithms/stress/rigid_body_spring/capacitance_correction.h"
 #include "algorithms/stress/rigid_body_spring/graph_stiffness.h"
 #include "algorithms/stress/rigid_body_spring/linear_solve.h"
 #include "algorithms/stress/rigid_body_spring/sparse_cholesky.h"
@@ -29,6 +38,12 @@
 #include <vector>
 
 namespace shatter {
+
+/// Unknowns of a block's changed nodes up to which a continuing round corrects instead of refactorising.
+inline constexpr int kMaxCorrectedUnknowns = 150;
+/// The largest relative residual |f - K u| / |f| a corrected round may end with; above it the round
+/// refactorises and solves again.
+inline constexpr double kMaxCorrectedResidual = 1e-11;
 
 class CascadeSolver final {
  public:
@@ -45,11 +60,15 @@ class CascadeSolver final {
   /// `broken`, #bonds) under `loads` (6 #nodes): their nodes' `displacements` (6 #nodes) and their
   /// bonds' `forces` (#bonds) are overwritten, nothing else is. Returns the report summed over those
   /// components as per-component solves would, or nothing when this path does not apply (nothing
-  /// written then).
+  /// written then). `continues`: the state solved is this solver's last output with more bonds
+  /// broken, so the factors of the rounds before may be corrected rather than refactorised.
   std::optional<SolverReport> solve(const SupportGraph& graph, const GraphComponents& components,
                                     std::span<const std::uint8_t> broken, std::span<const std::uint8_t> solve_now,
                                     std::span<const double> loads, std::vector<double>& displacements,
-                                    std::vector<BondForces>& forces);
+                                    std::vector<BondForces>& forces, bool continues = false);
+  /// Rounds solved through a capacitance correction, and rounds refactorised (tests, benchmarks).
+  [[nodiscard]] int corrected_rounds() const { return corrected_rounds_; }
+  [[nodiscard]] int refactorised_rounds() const { return refactorised_rounds_; }
 
  private:
   /// One decoupled block: its unknowns, the lower triangle of K(block, block) in a fixed pattern, and
@@ -62,7 +81,9 @@ class CascadeSolver final {
     bool failed = false;                   // a factorisation failed: the factor is not pooled again
     bool analysed = false;                 // ordering and symbolic factor done
     bool direct = false;                   // analysed and within direct_max_flops
-    bool factorised = false;               // numeric factor of the current K
+    bool factorised = false;               // numeric factor of the current K (or its correction)
+    CapacitanceCorrection correction;      // K against the values last factorised
+    bool corrected = false;                // this round solves through the correction
   };
   /// An entry of K between two blocks, dropped from both: value index and its diagonal indices.
   struct Coupling {
@@ -74,7 +95,11 @@ class CascadeSolver final {
   /// after a failed check, goes over them all; the others only over the couplings in the columns or
   /// rows of the nodes the last assembly rebuilt (the rest have not changed since they passed).
   [[nodiscard]] bool couplings_negligible();
-  bool factorize(Block& block);
+  /// Makes `block` ready to solve with this round's K: corrected when `correct` and the correction
+  /// applies, else factorised. False when it cannot be factorised directly.
+  bool factorize(Block& block, bool correct);
+  /// x = K(block, block)^-1 b with the block's factor or correction.
+  [[nodiscard]] Eigen::VectorXd block_solve(const Block& block, const Eigen::VectorXd& b) const;
 
   Material material_;
   SpringSolverSettings settings_;
@@ -84,6 +109,7 @@ class CascadeSolver final {
   std::vector<Coupling> couplings_;
   std::vector<int> node_coupling_start_, node_couplings_;  // per free node: couplings in its columns or rows
   bool couplings_known_negligible_ = false;                // every coupling passed the last check
+  int corrected_rounds_ = 0, refactorised_rounds_ = 0;
 };
 
 }  // namespace shatter

@@ -37,6 +37,8 @@ class SparseCholesky {
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
   /// True when factorised by node blocks (tests, docs).
   [[nodiscard]] bool by_node_blocks() const { return std::holds_alternative<NodeBlockCholesky>(impl_); }
+  /// The node-block factor, or null when factorised by CHOLMOD or not analysed.
+  [[nodiscard]] const NodeBlockCholesky* node_blocks() const { return std::get_if<NodeBlockCholesky>(&impl_); }
 
  private:
   std::variant<std::monostate, NodeBlockCholesky, SupernodalCholesky> impl_;

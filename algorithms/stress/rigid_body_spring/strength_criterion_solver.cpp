@@ -66,7 +66,18 @@ Result<StressResult> StrengthCriterionSolver::reevaluate(const Loads& loads, con
   // evaluation stays bit for bit what it is alone; the later rounds go through the kept cascade solver.
   if (!settings_.reference && has_previous) {
     if (!cascade_) cascade_ = std::make_unique<CascadeSolver>(material, settings_, memory_.analyses);
-    report = cascade_->solve(graph, components, broken, solve, f, out.displacements, forces);
+    // It continues the cascade solver's rounds when `previous` is its last output with more broken.
+    bool continues = !cascade_displacements_.empty() && previous.displacements == cascade_displacements_ &&
+                     broken != cascade_broken_;
+    for (std::size_t i = 0; continues && i < broken.size(); ++i) continues = broken[i] >= cascade_broken_[i];
+    report = cascade_->solve(graph, components, broken, solve, f, out.displacements, forces, continues);
+  }
+  if (report) {
+    cascade_displacements_ = out.displacements;
+    cascade_broken_ = broken;
+  } else {
+    cascade_displacements_.clear();
+    cascade_broken_.clear();
   }
   if (!report) {
     report = SolverReport{};

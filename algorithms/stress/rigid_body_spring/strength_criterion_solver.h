@@ -11,7 +11,10 @@
 /// starts with the work of the ones before. Paths are chosen as a solver without history would
 /// choose them: a first evaluation, and a cascade's first round (a `previous` without
 /// displacements), go per component; the later rounds of a cascade go through the cascade solver.
-/// So the results do not depend on what the solver solved before.
+/// So the results do not depend on what the solver solved before. A round whose `previous` is the
+/// cascade solver's own last output (the same displacements, bit for bit, and more bonds broken)
+/// continues its rounds and may correct their factors instead of refactorising (cascade_solver.h);
+/// any other round starts again from a factorisation.
 
 #include "algorithms/stress/rigid_body_spring/bond_stiffness_cache.h"
 #include "algorithms/stress/rigid_body_spring/cascade_solver.h"
@@ -39,6 +42,8 @@ class StrengthCriterionSolver final : public StressSolver {
                                                 std::span<const int> touched) override;
   /// What the per-component solves kept (tests).
   [[nodiscard]] const SolverMemory& memory() const { return memory_; }
+  /// The cascade solver, null before the first round that continues a cascade (tests, benchmarks).
+  [[nodiscard]] const CascadeSolver* cascade() const { return cascade_.get(); }
 
  private:
   const SupportGraph& graph_;
@@ -48,6 +53,10 @@ class StrengthCriterionSolver final : public StressSolver {
   SolverMemory memory_;                    // before cascade_: the cascade returns its factors to it
   BondStiffnessCache stiffness_;           // the bonds' springs and blocks, from each bond's first solve
   std::unique_ptr<CascadeSolver> cascade_; // made by the first round that continues a cascade
+  // The cascade solver's last output: displacements (6 #nodes) and broken flags (#bonds); empty when
+  // the last solve went another way.
+  std::vector<double> cascade_displacements_;
+  std::vector<std::uint8_t> cascade_broken_;
 };
 
 }  // namespace shatter

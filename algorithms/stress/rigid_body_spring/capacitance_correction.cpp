@@ -1,0 +1,128 @@
+#include "algorithms/stress/rigid_body_spring/capacitance_correction.h"
+
+#include <cassert>
+
+namespace shatter {
+
+void CapacitanceCorrection::reset(std::span<const double> base) {
+  base_.assign(base.begin(), base.end());
+  has_base_ = true;
+  nodes_.clear();
+  std::fill(slot_.begin(), slot_.end(), -1);
+  paths_.clear();
+  columns_.clear();
+  g_.resize(0, 0);
+  e_.resize(0, 0);
+}
+
+void CapacitanceCorrection::clear() {
+  reset({});
+  has_base_ = false;
+}
+
+bool CapacitanceCorrection::update(const NodeBlockCholesky& factor, const Eigen::SparseMatrix<double>& lower,
+                                   int max_unknowns) {
+  assert(has_base_ && base_.size() == static_cast<std::size_t>(lower.nonZeros()));
+  const int g = factor.node_size();
+  const int n = static_cast<int>(lower.cols());
+  if (g == 0 || n % g != 0) return false;
+  if (size_ != g || slot_.size() != static_cast<std::size_t>(n / g)) {
+    size_ = g;
+    slot_.assign(static_cast<std::size_t>(n / g), -1);
+    nodes_.clear();
+  }
+  const int* outer = lower.outerIndexPtr();
+  const int* inner = lower.innerIndexPtr();
+  const double* value = lower.valuePtr();
+  // The nodes with a changed entry, in the order of their columns; the ones already in P keep theirs.
+  const std::size_t known = nodes_.size();
+  const auto add = [&](int node) {
+    if (slot_[static_cast<std::size_t>(node)] >= 0) return;
+    slot_[static_cast<std::size_t>(node)] = static_cast<int>(nodes_.size());
+    nodes_.push_back(node);
+  };
+  for (int c = 0; c < n; ++c)
+    for (int at = outer[c]; at < outer[c + 1]; ++at)
+      if (value[at] != base_[static_cast<std::size_t>(at)]) add(c / g), add(inner[at] / g);
+  const int m = static_cast<int>(nodes_.size()) * g;
+  if (m > max_unknowns) {
+    // Too many for the dense capacitance: forget the new ones (the caller refactorises and resets).
+    for (std::size_t i = known; i < nodes_.size(); ++i) slot_[static_cast<std::size_t>(nodes_[i])] = -1;
+    nodes_.resize(known);
+    return false;
+  }
+
+  // The new nodes' columns of L^-1 P, and G's new rows and columns: G_ab = (L^-1 P_a)^T (L^-1 P_b),
+  // summed over the part the two paths share (from their lowest common ancestor up).
+  paths_.resize(nodes_.size());
+  columns_.resize(nodes_.size());
+  for (std::size_t i = known; i < nodes_.size(); ++i) factor.inverse_factor_columns(nodes_[i], paths_[i], columns_[i]);
+  g_.conservativeResize(m, m);
+  const int gg = g * g;
+  for (std::size_t a = known; a < nodes_.size(); ++a)
+    for (std::size_t b = 0; b <= a; ++b) {
+      double block[NodeBlockCholesky::kMaxNodeSize * NodeBlockCholesky::kMaxNodeSize] = {};
+      const std::vector<int>& pa = paths_[a];
+      const std::vector<int>& pb = paths_[b];
+      for (std::size_t i = 0, j = 0; i < pa.size() && j < pb.size();) {
+        if (pa[i] < pb[j]) {
+          ++i;
+        } else if (pb[j] < pa[i]) {
+          ++j;
+        } else {
+          const double* ya = columns_[a].data() + i * static_cast<std::size_t>(gg);
+          const double* yb = columns_[b].data() + j * static_cast<std::size_t>(gg);
+          for (int q = 0; q < g; ++q)      // column q of yb
+            for (int p = 0; p < g; ++p) {  // column p of ya
+              double sum = 0.0;
+              for (int t = 0; t < g; ++t) sum += ya[p * g + t] * yb[q * g + t];
+              block[q * g + p] += sum;
+            }
+          ++i, ++j;
+        }
+      }
+      const Eigen::Index ra = static_cast<Eigen::Index>(a) * g, rb = static_cast<Eigen::Index>(b) * g;
+      for (int q = 0; q < g; ++q)
+        for (int p = 0; p < g; ++p) {
+          g_(ra + p, rb + q) = block[q * g + p];
+          g_(rb + q, ra + p) = block[q * g + p];
+        }
+    }
+
+  // E over the nodes in P (an entry that changed has both its nodes there), then I - G E.
+  e_.setZero(m, m);
+  for (const int node : nodes_)
+    for (int t = 0; t < g; ++t) {
+      const int c = node * g + t;
+      const Eigen::Index ic = static_cast<Eigen::Index>(slot_[static_cast<std::size_t>(node)]) * g + t;
+      for (int at = outer[c]; at < outer[c + 1]; ++at) {
+        const int r = inner[at];
+        const int slot = slot_[static_cast<std::size_t>(r / g)];
+        if (slot < 0) continue;
+        const double d = base_[static_cast<std::size_t>(at)] - value[at];
+        const Eigen::Index ir = static_cast<Eigen::Index>(slot) * g + r % g;
+        e_(ir, ic) = d;
+        e_(ic, ir) = d;
+      }
+    }
+  if (m == 0) return true;
+  capacitance_.compute(Eigen::MatrixXd::Identity(m, m) - g_ * e_);
+  return capacitance_.rcond() >= 1e-12;
+}
+
+Eigen::VectorXd CapacitanceCorrection::solve(const NodeBlockCholesky& factor, const Eigen::VectorXd& b) const {
+  Eigen::VectorXd z = factor.solve(b);
+  if (nodes_.empty()) return z;
+  const int g = size_;
+  const Eigen::Index m = g_.rows();
+  Eigen::VectorXd z_p(m);
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    for (int t = 0; t < g; ++t) z_p[static_cast<Eigen::Index>(i) * g + t] = z[nodes_[i] * g + t];
+  const Eigen::VectorXd w = e_ * capacitance_.solve(z_p);
+  Eigen::VectorXd spread = Eigen::VectorXd::Zero(b.size());
+  for (std::size_t i = 0; i < nodes_.size(); ++i)
+    for (int t = 0; t < g; ++t) spread[nodes_[i] * g + t] = w[static_cast<Eigen::Index>(i) * g + t];
+  return z + factor.solve(spread);
+}
+
+}  // namespace shatter
