@@ -41,6 +41,8 @@ function(shatter_web_page name header notices)
     COMMAND ${CMAKE_COMMAND} -E env NODE_PATH=${SHATTER_WEB_DIR}/node_modules
             ${SHATTER_NODE} ${SHATTER_WEB_DIR}/node_modules/esbuild/bin/esbuild
             ${PROJECT_SOURCE_DIR}/web/src/${name}/main.js --bundle --minify --format=iife --charset=ascii
+            # The packages' licences go whole into the page's head comment (cmake/web_notices.cmake).
+            --legal-comments=none
             --target=es2020 --outfile=${script} --log-level=warning
     DEPENDS ${SHATTER_WEB_INSTALLED} ${SHATTER_WEB_SOURCES}
     COMMENT "esbuild: the ${name} page's script and style (web/src/${name})"
@@ -61,7 +63,7 @@ function(shatter_web_page name header notices)
 endfunction()
 
 # The licence of every package the bundle holds goes into the page (uPlot's MIT licence asks for it).
-set(SHATTER_WEB_BUNDLED_PACKAGES uplot)
+set(SHATTER_WEB_BUNDLED_PACKAGES uplot three)
 set(SHATTER_WEB_NOTICES ${SHATTER_WEB_DIR}/notices.txt)
 add_custom_command(
   OUTPUT ${SHATTER_WEB_NOTICES}

@@ -195,10 +195,10 @@ void add_corner(Primitive& p, const Mesh& mesh, std::size_t f, int k, const Vec3
 constexpr std::int32_t kPlainCut = -2;
 constexpr std::int32_t kPlainSurface = -1;
 
-/// The material of the cut faces of fragments without material slots: what prepare_cut_faces gives a
-/// mesh with slots (attribute_transfer.h), so cut faces read as the inside of the solid either way.
+/// The material of the cut faces of fragments without material slots: a warm red-brown, so that beside
+/// glTF's default white surface every cut reads as the inside of the solid.
 const MaterialSlot& plain_interior_slot() {
-  static const MaterialSlot slot{.name = "interior", .base_color = {0.5, 0.5, 0.5, 1.0}, .base_color_texture = {}, .base_color_image = {}};
+  static const MaterialSlot slot{.name = "interior", .base_color = {0.72, 0.33, 0.2, 1.0}, .base_color_texture = {}, .base_color_image = {}};
   return slot;
 }
 

@@ -21,7 +21,7 @@
 /// whose image is embedded in the binary chunk when the slot holds its bytes, else referenced by the
 /// slot's file path as a relative URI. A fragment without material slots has up to two primitives:
 /// its surface (and repair) faces with glTF's default material, its cut faces with material
-/// `interior` (mid grey, as prepare_cut_faces dresses them), so a viewer tells the two apart.
+/// `interior` (a warm red-brown), so a viewer tells the two apart.
 
 #include "algorithms/core/fragment.h"
 #include "algorithms/core/result.h"

@@ -203,7 +203,7 @@ Result<std::vector<ReportFragments>> find_fragments_folders(const fs::path& fold
     }
   }
   if (found.empty())
-    return Error{folder.string() + ": no fragments folder (" + kFragmentsSummaryFile +
+    return Error{folder.string() + ": a directory with no fragments folder (" + kFragmentsSummaryFile +
                  " and fragments.glb, from fracture --out or table --out) in it or below it"};
   std::sort(found.begin(), found.end());
   std::vector<ReportFragments> out;

@@ -1,16 +1,17 @@
 // The report page in a real browser (ctest: browser_report, label browser; docs/report.md, "Tests").
 //
-//   node tests/browser/report_page_test.mjs --cli build/bin/shatterbench --web build/web \
+//   node tests/browser/report_page_test.mjs --cli build/bin/shatterbench --web build/web --source . \
 //        --work build/browser-test --screenshots build/browser-screenshots [--chromium /usr/bin/chromium]
 //
-// Makes real results with the built command line (a small grid, an accuracy run, a stability case and a
-// fracture table) and three copies of the grid (a hostile case name; synthetic per-frame stage times and
+// Makes real results with the built command line (a small grid with its frames recorded, an accuracy
+// run, a stability case, a fracture table with its fragments and a textured asset's fragments) and three copies of the grid (a hostile case name; synthetic per-frame stage times and
 // a failed cell; no per-frame stage times, as older grids wrote), writes their report, and opens
 // report.html from file:// in headless Chromium (puppeteer-core from the build folder's node_modules;
 // no browser is downloaded).
 // Fails on any request that is not file:, data: or blob:, on any console error, page error or dialog,
 // when a chart's marks differ from the data, when a clicked heat-map cell does not open its timeline,
-// and when the page copied alone into another folder does not open the same way. Screenshots go to
+// when a 3D view draws too little (pixels read back) or not one mesh per fragment, when the playback
+// does not reach its last frame or shows other bodies than the results count, and when the page copied alone into another folder does not open the same way. Screenshots go to
 // --screenshots. Exit 0 when every check passed, 1 otherwise (a missing browser included: never a skip).
 
 import { execFileSync } from "node:child_process";
@@ -26,7 +27,7 @@ function parseArgs(argv) {
     const key = argv[i].replace(/^--/, "").replace(/-([a-z])/g, (_, c) => c.toUpperCase());
     args[key] = argv[i + 1];
   }
-  for (const key of ["cli", "web", "work", "screenshots"]) {
+  for (const key of ["cli", "web", "work", "screenshots", "source"]) {
     if (!args[key]) throw new Error(`--${key} is required`);
   }
   return args;
@@ -115,7 +116,7 @@ function withoutFrameStages(results) {
   return results;
 }
 
-function makeResults(cli, work) {
+function makeResults(cli, work, args) {
   const files = {
     grid: path.join(work, "grid.json"),
     hostile: path.join(work, "hostile-grid.json"),
@@ -124,9 +125,11 @@ function makeResults(cli, work) {
     accuracy: path.join(work, "accuracy.json"),
     stability: path.join(work, "stability.json"),
     table: path.join(work, "table.json"),
+    tableFragments: path.join(work, "table-fragments"),
+    textured: path.join(work, "textured-fragments"),
   };
   shatterbench(cli, ["grid", "--case", "building", "--prefracture", "10,20", "--runtime", "5,10", "--repetitions", "2",
-    "--frames", "30", "--no-cache", "--json", files.grid], [0, 1]);
+    "--frames", "30", "--no-cache", "--record-frames", "--json", files.grid], [0, 1]);
   const hostile = JSON.parse(fs.readFileSync(files.grid, "utf8"));
   hostile.case.name = HOSTILE_NAME;
   fs.writeFileSync(files.hostile, JSON.stringify(hostile));
@@ -139,7 +142,10 @@ function makeResults(cli, work) {
   const cube = path.join(work, "cube.off");
   fs.writeFileSync(cube, CUBE_OFF);
   shatterbench(cli, ["table", "--mesh", cube, "--algo", "plane-slice", "voronoi", "--fragments", "4", "--repetitions", "1",
-    "--json", files.table], [0, 1]);
+    "--json", files.table, "--out", files.tableFragments], [0, 1]);
+  // A textured asset: its surface keeps the texture, its cut faces get the interior material.
+  shatterbench(cli, ["fracture", "--mesh", path.join(args.source, "data", "assets", "BoxTextured.glb"), "--algo", "voronoi",
+    "--fragments", "6", "--out", files.textured]);
   return files;
 }
 
@@ -293,6 +299,118 @@ async function checkReport(page, files) {
   check(failedText.includes("timeout after 2 s"), `a failed cell's timeline does not give its reason: "${failedText}"`);
 }
 
+/** Share of the canvas `selector` whose pixels differ from the 3D views' background, the box they span and the share of it they fill. */
+async function drawnShare(page, selector) {
+  return page.$eval(selector, (canvas) => {
+    const { width, height } = canvas;
+    const pixels = canvas.getContext("2d").getImageData(0, 0, width, height).data;
+    const background = [0xf1, 0xf3, 0xf5];
+    let drawn = 0, minX = width, maxX = -1, minY = height, maxY = -1;
+    for (let y = 0; y < height; y++) {
+      for (let x = 0; x < width; x++) {
+        const i = 4 * (y * width + x);
+        if (Math.abs(pixels[i] - background[0]) + Math.abs(pixels[i + 1] - background[1]) + Math.abs(pixels[i + 2] - background[2]) > 24) {
+          drawn++;
+          minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
+        }
+      }
+    }
+    const area = maxX < 0 ? 0 : (maxX - minX + 1) * (maxY - minY + 1);
+    return { share: drawn / (width * height), area, fill: area > 0 ? drawn / area : 0 };
+  });
+}
+
+/** Every fragments folder below `dir` (its fracture.json), as the report finds them. */
+function fragmentsFolders(dir) {
+  if (fs.existsSync(path.join(dir, "fracture.json"))) return [dir];
+  return fs.readdirSync(dir, { withFileTypes: true }).filter((e) => e.isDirectory()).flatMap((e) => fragmentsFolders(path.join(dir, e.name)));
+}
+
+/** The 3D fragments views and the playback of the recorded grid. */
+async function check3D(page, files, screenshots) {
+  await page.waitForFunction(() => document.body.dataset.drawn !== undefined, { timeout: 120000 });
+  check(await page.evaluate(() => document.body.dataset.drawn) === "true", "the 3D views did not all draw");
+
+  // One panel per fragments folder, one mesh per fragment, the fragments' volumes adding up to the cube's.
+  const folders = [...fragmentsFolders(files.tableFragments), files.textured].map((f) => JSON.parse(fs.readFileSync(path.join(f, "fracture.json"), "utf8")));
+  const panels = await page.$$eval('[data-view="fragments"]', (els) => els.map((e) => ({ ...e.dataset })));
+  check(panels.length === folders.length, `fragments panels: ${panels.length}, folders: ${folders.length}`);
+  for (const summary of folders) {
+    const panel = panels.find((p) => p.algorithm === summary.algorithm && Number(p.fragments) === summary.fragments);
+    check(panel !== undefined, `no fragments panel for ${summary.algorithm} (${summary.fragments} fragments)`);
+    if (!panel) continue;
+    check(panel.ready === "true", `fragments panel ${summary.algorithm}: not drawn`);
+    check(Number(panel.meshes) === summary.fragments, `fragments panel ${summary.algorithm}: ${panel.meshes} meshes for ${summary.fragments} fragments`);
+  }
+  const cubePanels = panels.filter((p) => !/Textured/.test(p.title || ""));
+  for (const p of cubePanels) check(Math.abs(Number(p.totalVolume) - 1) < 1e-6, `the ${p.algorithm} fragments of the unit cube hold ${p.totalVolume} m^3`);
+  const canvases = await page.$$('[data-view="fragments"] canvas.view3d');
+  check(canvases.length === folders.length, `fragments canvases: ${canvases.length}`);
+  const shares = await page.$$eval('[data-view="fragments"] canvas.view3d', (els) => els.map((c) => c.dataset.drawn));
+  check(shares.every((n) => Number(n) >= 1), `fragments canvases not drawn: ${JSON.stringify(shares)}`);
+  const first = '[data-section="fragments"] [data-view="fragments"] canvas.view3d';
+  const before = await drawnShare(page, first);
+  check(before.share > 0.05, `the first fragments view is ${(100 * before.share).toFixed(1)} % drawn, expected more than 5 %`);
+
+  // The explode slider spreads the fragments: gaps open between them, so less of the box they span is drawn.
+  await page.$eval('[data-section="fragments"] [data-control="explode"]', (s) => { s.value = "100"; s.dispatchEvent(new Event("input")); });
+  const after = await drawnShare(page, first);
+  check(after.fill < before.fill * 0.9 && after.share > 0.01,
+    `explode: ${(100 * before.fill).toFixed(1)} % of the fragments' box drawn at rest, ${(100 * after.fill).toFixed(1)} % exploded`);
+  await (await page.$('[data-section="fragments"]')).screenshot({ path: path.join(screenshots, "report-fragments.png") });
+  await page.$eval('[data-section="fragments"] [data-control="explode"]', (s) => { s.value = "0"; s.dispatchEvent(new Event("input")); });
+
+  // Hover: the fragment under the pointer and its volume.
+  const box = await (await page.$(first)).boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  const hover = await page.$eval('[data-section="fragments"] [data-view="fragments"] .hover-line', (e) => ({ text: e.textContent, name: e.dataset.hover }));
+  check(/^fragment_\d+$/.test(hover.name) && /volume [0-9.e-]+ m/.test(hover.text), `hovering a fragment shows no volume: "${hover.text}"`);
+
+  // Playback of the recorded cell: reaches the last frame; a click on the timeline's spike frame shows it.
+  const grid = JSON.parse(fs.readFileSync(files.grid, "utf8"));
+  const section = `section[data-file="${files.grid}"]`;
+  const shown = await page.$eval(`${section} [data-chart="timeline"]`, (e) => e.dataset.cell);
+  const cell = grid.cells.find((c) => `${c.prefracture} x ${c.runtime}` === shown);
+  const recording = grid.recorded_frames.recordings.find((r) => r.prefracture === cell.prefracture && r.runtime === cell.runtime);
+  const sample = cell.samples[recording.repetition];
+  const player = `${section} [data-view="playback"]`;
+  await page.waitForSelector(`${player}[data-ready="true"]`, { timeout: 30000 });
+  const info = await page.$eval(player, (e) => ({ ...e.dataset }));
+  check(Number(info.frames) === grid.frames, `playback: ${info.frames} frames, the grid ran ${grid.frames}`);
+  check(Number(info.bodies) === recording.bodies, `playback: ${info.bodies} bodies, the results say ${recording.bodies}`);
+  check(Number(info.frame) === Math.max(0, sample.event_frame), `playback opens at frame ${info.frame}, the event frame is ${sample.event_frame}`);
+  await page.click(`${player} [data-action="play"]`);
+  await page.waitForSelector(`${player}[data-reached-end="true"]`, { timeout: 30000 });
+  const end = await page.$eval(player, (e) => ({ ...e.dataset }));
+  check(Number(end.frame) === grid.frames - 1, `playback stopped at frame ${end.frame}`);
+  check(Number(end.present) === sample.bodies && Number(end.shown) === sample.bodies,
+    `playback: ${end.present} bodies present and ${end.shown} drawn at the last frame, the results say ${sample.bodies}`);
+  const sweep = await page.$eval(player, (fig) => {
+    const s = fig.querySelector('[data-control="scrubber"]');
+    let spawned = 0, peak = 0;
+    for (let f = 0; f < Number(fig.dataset.frames); f++) {
+      s.value = String(f);
+      s.dispatchEvent(new Event("input"));
+      spawned += Number(fig.dataset.spawned);
+      peak = Math.max(peak, Number(fig.dataset.present));
+    }
+    return { spawned, peak };
+  });
+  check(sweep.peak === sample.bodies_peak, `playback: at most ${sweep.peak} bodies in a frame, the results say ${sample.bodies_peak}`);
+  check(sweep.spawned === recording.bodies, `playback: ${sweep.spawned} bodies entered over the frames, ${recording.bodies} were recorded`);
+  const spike = sample.frame_ms.indexOf(Math.max(...sample.frame_ms));
+  const over = await (await page.$(`${section} [data-chart="timeline"] .u-over`)).boundingBox();
+  await page.mouse.click(over.x + (over.width * spike) / (grid.frames - 1), over.y + over.height / 2);
+  const atSpike = await page.$eval(player, (e) => ({ ...e.dataset }));
+  const playhead = await page.$eval(`${section} [data-chart="timeline"]`, (e) => e.dataset.playhead);
+  check(Number(atSpike.frame) === spike && Number(playhead) === spike, `a click on the spike frame ${spike} shows frame ${atSpike.frame} (playhead ${playhead})`);
+  check(Number(atSpike.shown) === Number(atSpike.present) && Number(atSpike.present) <= sample.bodies_peak && Number(atSpike.present) > 0,
+    `the spike frame draws ${atSpike.shown} bodies, ${atSpike.present} were present, at most ${sample.bodies_peak}`);
+  const drawn = await drawnShare(page, `${player} canvas.view3d`);
+  check(drawn.share > 0.02, `the playback is ${(100 * drawn.share).toFixed(1)} % drawn at the spike frame`);
+  await (await page.$(`${section} .cell-detail`)).screenshot({ path: path.join(screenshots, "report-playback.png") });
+}
+
 async function main() {
   const args = parseArgs(process.argv.slice(2));
   if (!fs.existsSync(args.chromium)) {
@@ -305,10 +423,10 @@ async function main() {
   fs.rmSync(work, { recursive: true, force: true });
   fs.mkdirSync(work, { recursive: true });
   fs.mkdirSync(args.screenshots, { recursive: true });
-  const files = makeResults(args.cli, work);
+  const files = makeResults(args.cli, work, args);
   const out = path.join(work, "report");
   execFileSync(args.cli, ["report", files.grid, files.hostile, files.staged, files.legacy, files.accuracy, files.stability,
-    files.table, "--out", out],
+    files.table, files.tableFragments, files.textured, "--out", out],
     { stdio: ["ignore", "ignore", "inherit"] });
   const reportFile = path.join(out, "report.html");
 
@@ -322,12 +440,14 @@ async function main() {
     const { page, requests } = await openGuarded(browser, url, "report.html");
     await page.screenshot({ path: path.join(args.screenshots, "report-top.png") });
     await checkReport(page, files);
+    await check3D(page, files, args.screenshots);
     const detail = await page.$(".cell-detail");
     await detail.screenshot({ path: path.join(args.screenshots, "report-cell-timeline.png") });
     const pareto = await page.$('[data-chart="pareto"]');
     await pareto.screenshot({ path: path.join(args.screenshots, "report-pareto.png") });
     await page.screenshot({ path: path.join(args.screenshots, "report-full.png"), fullPage: true });
-    check(requests.length === 1 && requests[0] === url, `report.html loaded more than itself: ${JSON.stringify(requests)}`);
+    const loaded = requests.filter((r) => !/^(data|blob):/.test(r));
+    check(loaded.length === 1 && loaded[0] === url, `report.html loaded more than itself: ${JSON.stringify(loaded)}`);
     await page.close();
 
     // The page alone, copied into another folder (no results files, no images beside it).
@@ -339,8 +459,11 @@ async function main() {
       const opened = await openGuarded(browser, copyUrl, "copied report.html");
       const marks = await opened.page.$$eval('[data-chart="heat-map"]', (els) => els.map((e) => Number(e.dataset.marks)));
       check(marks.length === 4 && marks.every((m) => m > 0), `the copied page drew no heat map: ${JSON.stringify(marks)}`);
-      check(opened.requests.length === 1 && opened.requests[0] === copyUrl,
-        `the copied page loaded more than itself: ${JSON.stringify(opened.requests)}`);
+      const copyLoaded = opened.requests.filter((r) => !/^(data|blob):/.test(r));
+      check(copyLoaded.length === 1 && copyLoaded[0] === copyUrl, `the copied page loaded more than itself: ${JSON.stringify(copyLoaded)}`);
+      await opened.page.waitForFunction(() => document.body.dataset.drawn !== undefined, { timeout: 60000 });
+      const copyPanels = await opened.page.$$eval('[data-view="fragments"]', (els) => els.map((e) => e.dataset.ready));
+      check(copyPanels.length > 0 && copyPanels.every((r) => r === "true"), `the copied page drew no fragments: ${JSON.stringify(copyPanels)}`);
       await opened.page.close();
     } finally {
       fs.rmSync(elsewhere, { recursive: true, force: true });

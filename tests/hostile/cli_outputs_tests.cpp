@@ -157,8 +157,9 @@ TEST_CASE("cli outputs: a folder of the user's is never replaced by report or fr
   const CliRun two = run_cli_argv({"fracture", "--mesh", mesh.string(), "--fragments", "2", "--out", "frag"}, dir);
   REQUIRE(two.exit_code == 0);
   const auto count = nlohmann::json::parse(two.out)["fragments"].get<std::size_t>();
-  // The new fragments, the glTF file of all of them and the marker: no old fragment stays.
-  CHECK(names_in(dir / "frag").size() == count + 2);
+  // The new fragments, the glTF file of all of them, their summary and the marker: no old fragment stays.
+  CHECK(names_in(dir / "frag").size() == count + 3);
+  CHECK(fs::exists(dir / "frag" / "fracture.json"));
   CHECK(fs::exists(dir / "frag" / "fragments.glb"));
   CHECK(partials_in(dir) == 0);
 }

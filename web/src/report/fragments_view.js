@@ -10,8 +10,8 @@ import { unpack } from "./inflate.js";
 import { baseName, el, formatMs, formatNumber } from "./dom.js";
 import { noWebglNote, View3D, webglAvailable } from "./scene3d.js";
 
-const VIEW_WIDTH = 360;
-const VIEW_HEIGHT = 300;
+const VIEW_WIDTH = 290;
+const VIEW_HEIGHT = 290;
 const FRAGMENT_NAME = /^fragment_\d+$/;
 
 /** The fragments entries grouped by mesh, seed and requested count, in first-seen order. */
@@ -61,7 +61,7 @@ function fragmentsPanel(entry) {
   const hover = el("p", { class: "hover-line", "data-hover": "" }, "Hover a fragment for its volume.");
   let nodes = [];
   let centre = new THREE.Vector3();
-  let scale = 1;
+  let distance = 1;  // the camera's distance from the target with the fragments at rest
   let view = null;
   let lit = null;
   const light = (node) => {
@@ -93,9 +93,10 @@ function fragmentsPanel(entry) {
       centre = nodes.reduce((c, n) => c.addScaledVector(n.rest, Number.isFinite(n.volume) ? n.volume : 0), new THREE.Vector3())
         .multiplyScalar(total > 0 ? 1 / total : 0);
       const sphere = new THREE.Box3().setFromObject(gltf.scene).getBoundingSphere(new THREE.Sphere());
-      scale = 1;
-      view.frame(sphere.center, sphere.radius * 1.6);  // room for the fragments to spread
+      view.frame(sphere.center, sphere.radius);
+      distance = view.camera.position.distanceTo(view.controls.target);
       panel.dataset.meshes = String(nodes.filter((n) => n.meshes > 0).length);
+      panel.dataset.totalVolume = String(total);
       view.canvas.addEventListener("pointermove", (event) => {
         const hit = view.pick(event, nodes.map((n) => n.object))[0];
         const node = hit ? nodes.find((n) => { let o = hit.object; while (o && o !== n.object) o = o.parent; return o === n.object; }) : null;
@@ -112,8 +113,13 @@ function fragmentsPanel(entry) {
       if (onLoaded) onLoaded();
     },
     explode(k) {
-      for (const n of nodes) n.object.position.copy(n.rest).addScaledVector(n.rest.clone().sub(centre), k * scale);
-      if (view) view.draw();
+      for (const n of nodes) n.object.position.copy(n.rest).addScaledVector(n.rest.clone().sub(centre), k);
+      if (!view) return;
+      // The camera backs away as the fragments spread, so the outer ones stay in view.
+      const offset = view.camera.position.clone().sub(view.controls.target);
+      view.camera.position.copy(view.controls.target).addScaledVector(offset.normalize(), distance * (1 + 0.4 * k));
+      view.controls.update();
+      view.draw();
     },
   };
 }

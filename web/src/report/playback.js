@@ -47,7 +47,8 @@ export function frameCounts(rec, f) {
  * The playback of `rec` (a recording of a cell of grid results `results`) in a new element;
  * `onFrame(f)` is called when the shown frame changes. `mount()` builds the scene; `show(f)` shows
  * frame f. The element carries `data-frame`, `data-frames`, `data-present`, `data-spawned`,
- * `data-touching` (of the shown frame) and `data-reached-end` once playing reached the last frame.
+ * `data-touching` (of the shown frame, from the recording), `data-shown` (bodies drawn in the scene)
+ * and `data-reached-end` once playing reached the last frame.
  */
 export function playback(rec, results, onFrame) {
   const figure = el("figure", { class: "chart playback", "data-view": "playback", "data-frames": rec.frames, "data-bodies": rec.bodies.length,
@@ -89,7 +90,8 @@ export function playback(rec, results, onFrame) {
       for (const child of body.children) child.material = material(colour);
     }
     const counts = frameCounts(rec, f);
-    Object.assign(figure.dataset, { frame: String(f), present: String(counts.present), spawned: String(counts.spawned), touching: String(counts.touching) });
+    Object.assign(figure.dataset, { frame: String(f), present: String(counts.present), spawned: String(counts.spawned), touching: String(counts.touching),
+      shown: String(bodies.filter((b) => b.visible).length) });
     const stages = Object.entries(rec.stageMs).filter(([, v]) => v[f] > 0).sort((a, b) => b[1][f] - a[1][f])
       .slice(0, 3).map(([name, v]) => `${name} ${formatMs(v[f])}`);
     label.textContent = `frame ${f}: ${formatMs(rec.frameMs[f])}${stages.length ? ` (${stages.join(", ")})` : ""}; `

@@ -88,6 +88,7 @@ TEST_CASE("report html: one page with its script, style and data inline, loading
   CHECK(report_script().find("shatterbench-data") != std::string::npos);
   CHECK(report_style().find(".uplot") != std::string::npos);
   CHECK(report_licenses().find("uplot 1.6.32") != std::string::npos);
+  CHECK(report_licenses().find("three 0.187.0") != std::string::npos);
   CHECK(report_licenses().find("MIT License") != std::string::npos);
   // The data element comes before the script that reads it.
   CHECK(page.find(std::string(kReportDataElementId)) < page.find(std::string(report_script())));
