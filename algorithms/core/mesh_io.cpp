@@ -160,16 +160,16 @@ Result<Mesh> read_off(const std::filesystem::path& path, const MeshReadLimits& l
     if (!lines.next())
       return fail("truncated file: expected " + std::to_string(vertex_count) + " vertices, found " + std::to_string(v));
     const auto& tokens = lines.tokens();
-    const std::string vertex = "vertex " + std::to_string(v);
+    const auto vertex = [v] { return "vertex " + std::to_string(v); };  // built only for a message
     if (tokens.size() != layout->plain && tokens.size() != layout->with_alpha)
-      return fail(vertex + " has " + std::to_string(tokens.size()) + " numbers, expected " +
+      return fail(vertex() + " has " + std::to_string(tokens.size()) + " numbers, expected " +
                   std::to_string(layout->plain) +
                   (layout->with_alpha != layout->plain ? " or " + std::to_string(layout->with_alpha) : std::string()) +
                   " for header '" + keyword + "'");
     Vec3 p;
     for (std::size_t i = 0; i < tokens.size(); ++i) {
       const Result<double> x = parse_finite_double(tokens[i]);
-      if (!x) return fail(vertex + ": " + x.error().message);
+      if (!x) return fail(vertex() + ": " + x.error().message);
       if (i < 3) p[static_cast<int>(i)] = *x;  // normals, colours and texture coordinates are checked, not kept
     }
     mesh.vertices.push_back(p);
@@ -181,36 +181,36 @@ Result<Mesh> read_off(const std::filesystem::path& path, const MeshReadLimits& l
     if (!lines.next())
       return fail("truncated file: expected " + std::to_string(face_count) + " faces, found " + std::to_string(f));
     const auto& tokens = lines.tokens();
-    const std::string face = "face " + std::to_string(f);
+    const auto face = [f] { return "face " + std::to_string(f); };  // built only for a message
     const Result<std::int64_t> n = parse_integer(tokens[0]);
-    if (!n) return fail(face + ": " + n.error().message + " as corner count");
-    if (*n < 3) return fail(face + " has " + std::to_string(*n) + " corners (at least 3 needed)");
+    if (!n) return fail(face() + ": " + n.error().message + " as corner count");
+    if (*n < 3) return fail(face() + " has " + std::to_string(*n) + " corners (at least 3 needed)");
     if (*n > kMaxPolygonCorners)
-      return fail(face + " has " + std::to_string(*n) + " corners, past the limit of " +
+      return fail(face() + " has " + std::to_string(*n) + " corners, past the limit of " +
                   std::to_string(kMaxPolygonCorners) + " corners per polygon");
     const auto listed = static_cast<std::int64_t>(tokens.size()) - 1;
     if (listed < *n)
-      return fail(face + " declares " + std::to_string(*n) + " corners but lists " + std::to_string(listed));
+      return fail(face() + " declares " + std::to_string(*n) + " corners but lists " + std::to_string(listed));
     if (listed - *n > 4)
-      return fail(face + " has " + std::to_string(listed - *n) + " numbers after its " + std::to_string(*n) +
+      return fail(face() + " has " + std::to_string(listed - *n) + " numbers after its " + std::to_string(*n) +
                   " corners (a colour has at most 4)");
     for (std::int64_t i = *n + 1; i <= listed; ++i)
       if (const Result<double> c = parse_finite_double(tokens[static_cast<std::size_t>(i)]); !c)
-        return fail(face + ": " + c.error().message + " in its colour");
+        return fail(face() + ": " + c.error().message + " in its colour");
     if (static_cast<std::int64_t>(mesh.triangles.size()) + *n - 2 > limits.max_triangles)
-      return fail(face + ": triangle count (after triangulation) exceeds the limit of " +
+      return fail(face() + ": triangle count (after triangulation) exceeds the limit of " +
                   std::to_string(limits.max_triangles) + " triangles per mesh");
     poly.clear();
     for (std::int64_t i = 1; i <= *n; ++i) {
       const Result<std::int64_t> index = parse_integer(tokens[static_cast<std::size_t>(i)]);
-      if (!index) return fail(face + ": " + index.error().message);
+      if (!index) return fail(face() + ": " + index.error().message);
       if (*index < 0 || *index >= vertex_count)
-        return fail(face + ": vertex index " + std::to_string(*index) + " out of range (" +
+        return fail(face() + ": vertex index " + std::to_string(*index) + " out of range (" +
                     std::to_string(vertex_count) + " vertices)");
       poly.push_back(static_cast<std::int32_t>(*index));
     }
     if (Status s = triangulate_polygon(mesh.vertices, poly, mesh.triangles); !s)
-      return fail(face + ": " + s.error().message);
+      return fail(face() + ": " + s.error().message);
   }
   if (lines.next())
     return fail("count mismatch: data after the " + std::to_string(vertex_count) + " vertices and " +

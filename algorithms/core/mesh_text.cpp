@@ -11,22 +11,38 @@
 
 namespace shatter {
 
+namespace {
+
+/// The characters std::isspace accepts in the "C" locale that can occur inside a line (line ends
+/// are cut before), tested without a library call per character.
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
+
+}  // namespace
+
 bool TokenLines::next() {
-  while (pos_ < text_.size()) {
-    std::size_t end = text_.find_first_of("\r\n", pos_);
-    if (end == std::string_view::npos) end = text_.size();
-    std::string_view line = text_.substr(pos_, end - pos_);
+  const char* const data = text_.data();
+  const std::size_t size = text_.size();
+  while (pos_ < size) {
+    // One scan per line: it stops at the line's end, and notes the first '#' on the way.
+    std::size_t end = pos_;
+    std::size_t hash = std::string_view::npos;
+    for (; end < size; ++end) {
+      const char c = data[end];
+      if (c == '\n' || c == '\r') break;
+      if (c == '#' && hash == std::string_view::npos) hash = end;
+    }
+    const std::size_t line_end = hash != std::string_view::npos ? hash : end;
+    const std::size_t line_start = pos_;
     pos_ = end + 1;
-    if (end + 1 < text_.size() && text_[end] == '\r' && text_[end + 1] == '\n') ++pos_;  // "\r\n" is one end
+    if (end + 1 < size && data[end] == '\r' && data[end + 1] == '\n') ++pos_;  // "\r\n" is one end
     ++line_;
-    if (const std::size_t hash = line.find('#'); hash != std::string_view::npos) line = line.substr(0, hash);
     tokens_.clear();
-    std::size_t i = 0;
-    while (i < line.size()) {
-      while (i < line.size() && std::isspace(static_cast<unsigned char>(line[i]))) ++i;
+    std::size_t i = line_start;
+    while (i < line_end) {
+      while (i < line_end && is_blank(data[i])) ++i;
       const std::size_t start = i;
-      while (i < line.size() && !std::isspace(static_cast<unsigned char>(line[i]))) ++i;
-      if (i > start) tokens_.push_back(line.substr(start, i - start));
+      while (i < line_end && !is_blank(data[i])) ++i;
+      if (i > start) tokens_.emplace_back(data + start, i - start);
     }
     if (!tokens_.empty()) return true;
   }

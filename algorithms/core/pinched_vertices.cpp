@@ -7,14 +7,11 @@
 #include <cstdint>
 #include <numeric>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace shatter {
 namespace {
-
-std::uint64_t key(std::int32_t a, std::int32_t b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
 
 std::int32_t find(std::vector<std::int32_t>& parent, std::int32_t x) {
   while (parent[static_cast<std::size_t>(x)] != x) {
@@ -59,28 +56,50 @@ bool pair_around_edge(const Mesh& mesh, std::int32_t lo, std::int32_t hi, const 
 }
 
 /// The twin of every halfedge (see pair_around_edge), or an empty vector when some edge has none.
+/// The halfedges are grouped by undirected edge without a hash map: bucketed by their lower vertex
+/// (a counting sort, which keeps them in corner order), then each small bucket sorted by the upper
+/// vertex. Linear in the corners on a mesh of bounded degree.
 std::vector<std::int32_t> twins(const Mesh& mesh, int& split_edges) {
   const auto corners = static_cast<std::int32_t>(3 * mesh.triangles.size());
-  std::unordered_map<std::uint64_t, std::vector<std::int32_t>> uses;  // undirected edge -> halfedges
-  uses.reserve(static_cast<std::size_t>(corners));
-  for (std::int32_t c = 0; c < corners; ++c) {
+  const auto ends = [&](std::int32_t c) {
     const Triangle& t = mesh.triangles[static_cast<std::size_t>(c / 3)];
     const std::int32_t p = t[c % 3], q = t[(c % 3 + 1) % 3];
-    uses[key(std::min(p, q), std::max(p, q))].push_back(c);
+    return std::pair{std::min(p, q), std::max(p, q)};
+  };
+  std::vector<std::int32_t> start(mesh.vertices.size() + 1, 0);
+  for (std::int32_t c = 0; c < corners; ++c) ++start[static_cast<std::size_t>(ends(c).first) + 1];
+  for (std::size_t v = 0; v + 1 < start.size(); ++v) start[v + 1] += start[v];
+  std::vector<std::pair<std::int32_t, std::int32_t>> bucketed(static_cast<std::size_t>(corners));  // (upper, corner)
+  {
+    std::vector<std::int32_t> fill(start.begin(), start.end() - 1);
+    for (std::int32_t c = 0; c < corners; ++c) {
+      const auto [lo, hi] = ends(c);
+      bucketed[static_cast<std::size_t>(fill[static_cast<std::size_t>(lo)]++)] = {hi, c};
+    }
   }
   std::vector<std::int32_t> twin(static_cast<std::size_t>(corners), -1);
+  std::vector<std::int32_t> halfedges;
   split_edges = 0;
-  for (const auto& [edge, halfedges] : uses) {
-    const auto lo = static_cast<std::int32_t>(edge >> 32), hi = static_cast<std::int32_t>(edge & 0xffffffffu);
-    if (halfedges.size() == 2) {
-      const auto first = static_cast<std::size_t>(halfedges[0]), second = static_cast<std::size_t>(halfedges[1]);
-      if (mesh.triangles[first / 3][first % 3] == mesh.triangles[second / 3][second % 3]) return {};
-      twin[first] = halfedges[1];
-      twin[second] = halfedges[0];
-      continue;
+  for (std::size_t lo = 0; lo + 1 < start.size(); ++lo) {
+    const auto first = bucketed.begin() + start[lo], last = bucketed.begin() + start[lo + 1];
+    std::sort(first, last);  // by upper vertex, then corner
+    for (auto run = first; run != last;) {
+      auto end = run;
+      halfedges.clear();
+      while (end != last && end->first == run->first) halfedges.push_back((end++)->second);
+      const std::int32_t hi = run->first;
+      run = end;
+      if (halfedges.size() == 2) {
+        const auto a = static_cast<std::size_t>(halfedges[0]), b = static_cast<std::size_t>(halfedges[1]);
+        if (mesh.triangles[a / 3][a % 3] == mesh.triangles[b / 3][b % 3]) return {};
+        twin[a] = halfedges[1];
+        twin[b] = halfedges[0];
+        continue;
+      }
+      if (halfedges.size() % 2 != 0 || !pair_around_edge(mesh, static_cast<std::int32_t>(lo), hi, halfedges, twin))
+        return {};
+      ++split_edges;
     }
-    if (halfedges.size() % 2 != 0 || !pair_around_edge(mesh, lo, hi, halfedges, twin)) return {};
-    ++split_edges;
   }
   return twin;
 }

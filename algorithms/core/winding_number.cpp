@@ -51,13 +51,23 @@ double winding_number(const Mesh& mesh, const Vec3& q) {
 
 WindingNumberQuery::WindingNumberQuery(const Mesh& mesh) {
   if (mesh.triangles.empty()) return;
-  std::vector<Triangle> order = mesh.triangles;
+  // Each triangle with its corner sum (3 x centroid, the split key) computed once: the median
+  // splits then compare keys held beside the triangles instead of gathering three corners per
+  // comparison.
+  std::vector<Keyed> order(mesh.triangles.size());
+  for (std::size_t f = 0; f < order.size(); ++f) {
+    const Triangle& t = mesh.triangles[f];
+    for (const std::int32_t v : t) assert(v >= 0 && static_cast<std::size_t>(v) < mesh.vertices.size());
+    order[f] = {mesh.vertices[static_cast<std::size_t>(t[0])] + mesh.vertices[static_cast<std::size_t>(t[1])] +
+                    mesh.vertices[static_cast<std::size_t>(t[2])],
+                t};
+  }
   nodes_.reserve(2 * (order.size() / kLeafSize + 1));
   nodes_.emplace_back();
   build(mesh, order, 0, 0, static_cast<int>(order.size()));
   bounds_ = nodes_[0].box;
   triangles_.reserve(order.size());
-  for (const Triangle& t : order) {
+  for (const auto& [sum, t] : order) {
     triangles_.push_back({mesh.vertices[static_cast<std::size_t>(t[0])], mesh.vertices[static_cast<std::size_t>(t[1])],
                           mesh.vertices[static_cast<std::size_t>(t[2])]});  // indices checked in build()
   }
@@ -65,39 +75,36 @@ WindingNumberQuery::WindingNumberQuery(const Mesh& mesh) {
 
 // Builds node `node` over order[begin, end) and its subtree; returns the node's boundary: the net
 // directed edges (an edge used as a->b twice and as b->a once is returned as a->b, count 1).
-std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh, std::vector<Triangle>& order,
+std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh, std::vector<Keyed>& order,
                                                                 int node, int begin, int end) {
   auto point = [&](std::int32_t v) -> const Vec3& {
     assert(v >= 0 && static_cast<std::size_t>(v) < mesh.vertices.size());
     return mesh.vertices[static_cast<std::size_t>(v)];
   };
-  Aabb box;
-  Aabb centroids;  // of the corner sums (3 x centroid)
-  for (int f = begin; f < end; ++f) {
-    const Triangle& t = order[static_cast<std::size_t>(f)];
-    for (const std::int32_t v : t) box.extend(point(v));
-    centroids.extend(point(t[0]) + point(t[1]) + point(t[2]));
-  }
-  nodes_[static_cast<std::size_t>(node)].box = box;
   nodes_[static_cast<std::size_t>(node)].begin = begin;
   nodes_[static_cast<std::size_t>(node)].end = end;
 
+  // A leaf's box is its corners'; an inner node's the union of its children's (the same box, with
+  // no pass over the corners per level).
   std::vector<Edge> edges;
   if (end - begin <= kLeafSize) {
+    Aabb box;
+    edges.reserve(static_cast<std::size_t>(3 * (end - begin)));
     for (int f = begin; f < end; ++f) {
-      const Triangle& t = order[static_cast<std::size_t>(f)];
+      const Triangle& t = order[static_cast<std::size_t>(f)].triangle;
+      for (const std::int32_t v : t) box.extend(point(v));
       for (int k = 0; k < 3; ++k) edges.push_back({t[k], t[(k + 1) % 3], 1});
     }
+    nodes_[static_cast<std::size_t>(node)].box = box;
   } else {
+    Aabb centroids;  // of the corner sums (3 x centroid)
+    for (int f = begin; f < end; ++f) centroids.extend(order[static_cast<std::size_t>(f)].sum);
     // Median split of the centroids along the longest axis of their box.
     int axis = 0;
     (centroids.max - centroids.min).maxCoeff(&axis);
     const int mid = begin + (end - begin) / 2;
     std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                     [&](const Triangle& a, const Triangle& b) {
-                       return (point(a[0]) + point(a[1]) + point(a[2]))[axis] <
-                              (point(b[0]) + point(b[1]) + point(b[2]))[axis];
-                     });
+                     [axis](const Keyed& a, const Keyed& b) { return a.sum[axis] < b.sum[axis]; });
     const int left = static_cast<int>(nodes_.size());
     nodes_.emplace_back();
     const int right = static_cast<int>(nodes_.size());
@@ -107,6 +114,10 @@ std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh
     edges = build(mesh, order, left, begin, mid);
     const std::vector<Edge> right_edges = build(mesh, order, right, mid, end);
     edges.insert(edges.end(), right_edges.begin(), right_edges.end());
+    Aabb box = nodes_[static_cast<std::size_t>(left)].box;
+    box.extend(nodes_[static_cast<std::size_t>(right)].box.min);
+    box.extend(nodes_[static_cast<std::size_t>(right)].box.max);
+    nodes_[static_cast<std::size_t>(node)].box = box;
   }
 
   // Net multiplicity per undirected edge: +count for min->max, -count for max->min.

@@ -65,7 +65,13 @@ class WindingNumberQuery {
     int count;
   };
 
-  std::vector<Edge> build(const Mesh& mesh, std::vector<Triangle>& order, int node, int begin, int end);
+  // A triangle and the sum of its corners (3 x centroid), the key of the median split.
+  struct Keyed {
+    Vec3 sum;
+    Triangle triangle;
+  };
+
+  std::vector<Edge> build(const Mesh& mesh, std::vector<Keyed>& order, int node, int begin, int end);
 
   std::vector<Corners> triangles_;  // #F corners in tree order
   std::vector<Corners> fans_;       // boundary fans of the inner nodes, edges in their own direction
