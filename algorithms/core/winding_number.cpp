@@ -6,6 +6,7 @@
 #include <cassert>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace shatter {
 namespace {
@@ -64,7 +65,10 @@ WindingNumberQuery::WindingNumberQuery(const Mesh& mesh) {
   }
   nodes_.reserve(2 * (order.size() / kLeafSize + 1));
   nodes_.emplace_back();
-  build(mesh, order, 0, 0, static_cast<int>(order.size()));
+  std::vector<Edge> boundary;
+  boundary.reserve(4 * kLeafSize * 3);
+  build(mesh, order, 0, 0, static_cast<int>(order.size()), boundary);
+  closed_ = boundary.empty();
   bounds_ = nodes_[0].box;
   triangles_.reserve(order.size());
   for (const auto& [sum, t] : order) {
@@ -73,10 +77,13 @@ WindingNumberQuery::WindingNumberQuery(const Mesh& mesh) {
   }
 }
 
-// Builds node `node` over order[begin, end) and its subtree; returns the node's boundary: the net
-// directed edges (an edge used as a->b twice and as b->a once is returned as a->b, count 1).
-std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh, std::vector<Keyed>& order,
-                                                                int node, int begin, int end) {
+// Builds node `node` over order[begin, end) and its subtree; appends the node's boundary to `edges`:
+// the net directed edges (an edge used as a->b twice and as b->a once is appended as a->b, count 1).
+// `edges` is one stack for the whole build: a node's children append their boundaries, which the node
+// replaces by its own in place, so no node allocates.
+void WindingNumberQuery::build(const Mesh& mesh, std::vector<Keyed>& order, int node, int begin, int end,
+                               std::vector<Edge>& edges) {
+  const std::size_t base = edges.size();
   auto point = [&](std::int32_t v) -> const Vec3& {
     assert(v >= 0 && static_cast<std::size_t>(v) < mesh.vertices.size());
     return mesh.vertices[static_cast<std::size_t>(v)];
@@ -86,10 +93,8 @@ std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh
 
   // A leaf's box is its corners'; an inner node's the union of its children's (the same box, with
   // no pass over the corners per level).
-  std::vector<Edge> edges;
   if (end - begin <= kLeafSize) {
     Aabb box;
-    edges.reserve(static_cast<std::size_t>(3 * (end - begin)));
     for (int f = begin; f < end; ++f) {
       const Triangle& t = order[static_cast<std::size_t>(f)].triangle;
       for (const std::int32_t v : t) box.extend(point(v));
@@ -111,9 +116,8 @@ std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh
     nodes_.emplace_back();
     nodes_[static_cast<std::size_t>(node)].left = left;
     nodes_[static_cast<std::size_t>(node)].right = right;
-    edges = build(mesh, order, left, begin, mid);
-    const std::vector<Edge> right_edges = build(mesh, order, right, mid, end);
-    edges.insert(edges.end(), right_edges.begin(), right_edges.end());
+    build(mesh, order, left, begin, mid, edges);
+    build(mesh, order, right, mid, end, edges);
     Aabb box = nodes_[static_cast<std::size_t>(left)].box;
     box.extend(nodes_[static_cast<std::size_t>(right)].box.min);
     box.extend(nodes_[static_cast<std::size_t>(right)].box.max);
@@ -121,17 +125,19 @@ std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh
   }
 
   // Net multiplicity per undirected edge: +count for min->max, -count for max->min.
-  for (Edge& e : edges) {
+  for (std::size_t i = base; i < edges.size(); ++i) {
+    Edge& e = edges[i];
     if (e.from > e.to) {
       std::swap(e.from, e.to);
       e.count = -e.count;
     }
   }
-  std::sort(edges.begin(), edges.end(),
+  std::sort(edges.begin() + static_cast<std::ptrdiff_t>(base), edges.end(),
             [](const Edge& a, const Edge& b) { return a.from != b.from ? a.from < b.from : a.to < b.to; });
-  std::vector<Edge> boundary;
+  // Merged in place: the write position never passes the read position.
+  std::size_t kept = base;
   int fan_size = 0;
-  for (std::size_t i = 0; i < edges.size();) {
+  for (std::size_t i = base; i < edges.size();) {
     Edge net = edges[i];
     for (++i; i < edges.size() && edges[i].from == net.from && edges[i].to == net.to; ++i) net.count += edges[i].count;
     if (net.count == 0) continue;
@@ -139,9 +145,11 @@ std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh
       std::swap(net.from, net.to);
       net.count = -net.count;
     }
-    boundary.push_back(net);
+    edges[kept++] = net;
     fan_size += net.count;
   }
+  edges.resize(kept);
+  const std::span<const Edge> boundary(edges.data() + base, kept - base);
 
   // Inner node: keep the fan when it is cheaper than descending. Fan triangles through the apex
   // are degenerate (solid angle 0) and skipped.
@@ -157,7 +165,6 @@ std::vector<WindingNumberQuery::Edge> WindingNumberQuery::build(const Mesh& mesh
     }
     n.fan_end = static_cast<int>(fans_.size());
   }
-  return boundary;
 }
 
 double WindingNumberQuery::operator()(const Vec3& q) const {

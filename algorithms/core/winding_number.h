@@ -49,6 +49,10 @@ class WindingNumberQuery {
   /// Number of triangles of the mesh.
   [[nodiscard]] std::size_t triangle_count() const { return triangles_.size(); }
 
+  /// True when the mesh's directed edges cancel (each a->b as often as b->a): it bounds, and its
+  /// winding number off the surface is an integer. False for a mesh without triangles.
+  [[nodiscard]] bool closed() const { return closed_; }
+
  private:
   using Corners = std::array<Vec3, 3>;
   // A tree node: triangles_[begin, end) and, for an inner node with a small enough boundary, the
@@ -71,12 +75,13 @@ class WindingNumberQuery {
     Triangle triangle;
   };
 
-  std::vector<Edge> build(const Mesh& mesh, std::vector<Keyed>& order, int node, int begin, int end);
+  void build(const Mesh& mesh, std::vector<Keyed>& order, int node, int begin, int end, std::vector<Edge>& edges);
 
   std::vector<Corners> triangles_;  // #F corners in tree order
   std::vector<Corners> fans_;       // boundary fans of the inner nodes, edges in their own direction
   std::vector<Node> nodes_;         // nodes_[0] is the root
   Aabb bounds_;
+  bool closed_ = false;
 };
 
 }  // namespace shatter

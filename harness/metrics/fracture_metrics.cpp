@@ -4,7 +4,7 @@
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/random.h"
 #include "algorithms/core/shell_classification.h"
-#include "algorithms/core/winding_number.h"
+#include "algorithms/core/winding_number_cells.h"
 
 #include <fmt/core.h>
 
@@ -54,9 +54,10 @@ PartitionResult sample_partition(const Mesh& input, std::span<const Fragment> fr
   const int wanted = options.partition_samples;
   if (wanted <= 0 || input.empty()) return result;
 
-  const WindingNumberQuery inside_input(input);
+  // Most samples lie far from every surface: a lookup answers them (winding_number_cells.h).
+  const WindingNumberCells inside_input(input);
   const Aabb& box = inside_input.bounds();
-  std::vector<WindingNumberQuery> inside_fragment;
+  std::vector<WindingNumberCells> inside_fragment;
   inside_fragment.reserve(fragments.size());
   for (const Fragment& fragment : fragments) inside_fragment.emplace_back(fragment.mesh);
 
@@ -70,7 +71,7 @@ PartitionResult sample_partition(const Mesh& input, std::span<const Fragment> fr
     if (expected < 1) continue;
     ++result.samples;
     long containing = 0;
-    for (const WindingNumberQuery& fragment : inside_fragment) {
+    for (const WindingNumberCells& fragment : inside_fragment) {
       // Culling: outside a closed fragment's box the point is outside the fragment.
       if (!fragment.bounds().contains(p)) continue;
       if (fragment(p) > 0.5 && ++containing > expected) break;  // already too many
