@@ -10,6 +10,8 @@
 #include "algorithms/core/mesh.h"
 #include "algorithms/core/result.h"
 #include "algorithms/fracture/cut_plan.h"
+#include "algorithms/fracture/cut_plan_replay.h"
+#include "algorithms/fracture/plane_cutting.h"
 
 #include <cstdint>
 #include <memory>
@@ -57,16 +59,14 @@ class Fracturer {
     (void)params;
     return std::optional<CutPlan>();
   }
-  /// Cuts `solid` by each of `planes` in turn, every piece a plane crosses split in two, for callers
-  /// that choose the cuts (the stability battery's exact cuts); none (the default) when the fracturer
-  /// only cuts where it chooses. Errors as fracture() does.
-  [[nodiscard]] virtual Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
-                                                                               std::span<const Plane> planes) const {
-    (void)solid;
-    (void)planes;
-    return std::optional<std::vector<Fragment>>();
-  }
-  /// True for an exact reference: the fracturer others are replayed with, not itself measured.
+  /// The capability to cut by planes the caller chooses (plane_cutting.h), or null (the default) when
+  /// the fracturer only cuts where it chooses. The object lives as long as the fracturer.
+  [[nodiscard]] virtual const PlaneCutting* plane_cutting() const { return nullptr; }
+  /// The capability to replay another fracturer's cut plan (cut_plan_replay.h), or null (the default).
+  /// The object lives as long as the fracturer.
+  [[nodiscard]] virtual const CutPlanReplay* cut_plan_replay() const { return nullptr; }
+  /// True for an exact reference: the fracturer others are replayed with (through its cut_plan_replay),
+  /// not itself measured.
   [[nodiscard]] virtual bool exact_reference() const { return false; }
   /// The relative volume error |sum of the fragments' volumes - the input's| / the input's that this
   /// fracturer's fragments may carry by design: 0 (the default) for cuts that keep the volume to

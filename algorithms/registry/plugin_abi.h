@@ -8,4 +8,4 @@
 /// The layout of the plugin descriptor and of what a plugin shares with the host (Registries and
 /// the interfaces it holds). A loaded plugin must have been built with the same value, the same
 /// SHATTERBENCH_VERSION and the same C++ ABI as the host.
-#define SHATTERBENCH_PLUGIN_ABI 3
+#define SHATTERBENCH_PLUGIN_ABI 4

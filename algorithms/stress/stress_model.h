@@ -118,6 +118,10 @@ class StressModel {
   /// material is reported by the solver's evaluations.
   [[nodiscard]] virtual std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
                                                                   const Material& material) const = 0;
+  /// The model whose cascade is the exact reference for this one's (`shatterbench accuracy --family
+  /// cascade`): the same criterion with every round an exact solve. Null (the default) when the model
+  /// states none; the accuracy command then reports no cascade error for it.
+  [[nodiscard]] virtual std::unique_ptr<StressModel> exact_cascade_reference() const { return nullptr; }
   /// Evaluates the intact `graph` once, with a solver of its own that ends with the call.
   [[nodiscard]] Result<StressResult> evaluate(const SupportGraph& graph, const Loads& loads,
                                               const Material& material) const {

@@ -1,7 +1,6 @@
 #include "harness/accuracy/beam_reference.h"
 
 #include "algorithms/core/primitives.h"
-#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -94,7 +93,7 @@ std::optional<BeamReference> classify_beam_case(const Case& c) {
   return r;
 }
 
-Result<SupportGraph> beam_structure(const BeamReference& ref, int slabs) {
+Result<SupportGraph> beam_structure(const BeamReference& ref, int slabs, const PlaneCutting& cutter) {
   if (slabs < 2) return Error{"slabs: must be >= 2"};
   const double lo = low(ref), hi = high(ref), l = span(ref);
   std::vector<Plane> planes;
@@ -119,7 +118,7 @@ Result<SupportGraph> beam_structure(const BeamReference& ref, int slabs) {
     const double reach = 1e-3 * l / slabs;
     anchors = {ref.anchored_at_min ? slab_region(ref, lo - l, lo + reach) : slab_region(ref, hi - reach, hi + l)};
   }
-  Result<std::vector<Fragment>> fragments = PlaneSliceFracturer().fracture_by_planes(make_box(size, ref.center), planes);
+  Result<std::vector<Fragment>> fragments = cutter.cut_by_planes(make_box(size, ref.center), planes);
   if (!fragments) return fragments.error();
   SupportGraphSettings settings;
   settings.density = ref.density;

@@ -12,6 +12,7 @@
 ///   rigid-body-spring model approaches it as 1 / n^2 in the slab count n, docs/stress.md).
 
 #include "algorithms/bonds/support_graph.h"
+#include "algorithms/fracture/plane_cutting.h"
 #include "algorithms/stress/stress_model.h"
 #include "harness/cases/case.h"
 
@@ -45,8 +46,9 @@ std::optional<BeamReference> classify_beam_case(const Case& c);
 
 /// The structure of `ref` cut into `slabs` (>= 2) equal slabs. Cantilever and column: only the slab at
 /// the held end is anchored. Fixed-fixed beam: the span is held by two thin anchored end blocks
-/// (1e-5 of the span) so that the bonds at both ends are the clamped sections.
-Result<SupportGraph> beam_structure(const BeamReference& ref, int slabs);
+/// (1e-5 of the span) so that the bonds at both ends are the clamped sections. The slabs are cut by
+/// `cutter` (the case's plane_cutter, harness/plugins/capable_fracturer.h).
+Result<SupportGraph> beam_structure(const BeamReference& ref, int slabs, const PlaneCutting& cutter);
 
 /// Largest relative error of the bond results against the closed form: cantilever, bending moment and
 /// peak normal stress at every bond; column, peak normal stress at every bond; fixed-fixed beam, the

@@ -1,6 +1,5 @@
 #include "harness/accuracy/cascade_accuracy.h"
 
-#include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "harness/accuracy/stress_accuracy.h"
 #include "harness/pipeline/case_structure.h"
 
@@ -46,10 +45,8 @@ std::vector<int> every_node(const SupportGraph& graph) {
 }
 
 Result<Reference> reference_cascade(const SupportGraph& graph, const Loads& loads, const Material& material,
-                                    Criterion criterion, const std::vector<int>& hole) {
-  SpringSolverSettings exact;
-  exact.reference = true;
-  const std::unique_ptr<StressSolver> solver = StrengthCriterionModel(criterion, exact).make_solver(graph, material);
+                                    const StressModel& exact, const std::vector<int>& hole) {
+  const std::unique_ptr<StressSolver> solver = exact.make_solver(graph, material);
   Reference r;
   Result<PropagationResult> cascade = propagate(*solver, loads, hole);
   if (!cascade) return cascade.error();
@@ -138,10 +135,6 @@ AccuracyPoint measure(const std::string& case_name, const SupportGraph& graph, c
 
 }  // namespace
 
-Criterion reference_criterion(std::string_view model) {
-  return model.starts_with("tresca") ? Criterion::tresca : Criterion::von_mises;
-}
-
 double CascadeComparison::broken_share() const {
   return static_cast<double>(broken_mismatch) / std::max(1, reference_broken);
 }
@@ -175,12 +168,7 @@ CascadeComparison compare_cascades(const PropagationResult& cascade, const Propa
 
 Result<std::vector<AccuracyPoint>> cascade_accuracy(const Case& c, const CascadeAccuracyOptions& o,
                                                     const Registries& registries) {
-  std::vector<std::string> models = o.models;
-  if (models.empty())
-    for (const std::string& name : registries.stress_models.names()) {
-      Result<std::unique_ptr<StressModel>> m = registries.stress_models.create(name);
-      if (m && (*m)->driven_by_loads()) models.push_back(name);
-    }
+  const std::vector<std::string> models = o.models.empty() ? registries.stress_models.names() : o.models;
   Result<CaseStructure> cs = build_case_structure(c, registries);
   if (!cs) return cs.error();
   const SupportGraph& graph = cs->graph;
@@ -199,18 +187,29 @@ Result<std::vector<AccuracyPoint>> cascade_accuracy(const Case& c, const Cascade
     hole = graph.node_bonds[static_cast<std::size_t>(nearest)];
   }
 
+  // The models grouped by their exact reference (StressModel::exact_cascade_reference, one group per
+  // reference name), in the order the models come; a model that states none is left out.
+  struct Group {
+    std::unique_ptr<StressModel> reference;
+    std::vector<std::string> models;
+  };
+  std::vector<Group> groups;
   std::vector<AccuracyPoint> points;
-  for (const Criterion criterion : {Criterion::von_mises, Criterion::tresca}) {
-    std::vector<std::string> mine;
-    for (const std::string& m : models)
-      if (reference_criterion(m) == criterion) mine.push_back(m);
-    if (mine.empty()) continue;
+  for (const std::string& name : models) {
+    Result<std::unique_ptr<StressModel>> model = registries.stress_models.create(name);
+    if (!model) return model.error();
+    std::unique_ptr<StressModel> reference = (*model)->exact_cascade_reference();
+    if (reference == nullptr) continue;
+    const auto same = [&](const Group& g) { return g.reference->name() == reference->name(); };
+    if (const auto it = std::find_if(groups.begin(), groups.end(), same); it != groups.end())
+      it->models.push_back(name);
+    else
+      groups.push_back({std::move(reference), {name}});
+  }
+  for (const Group& group : groups) {
     // Strengths scaled so that the exact solve of the holed structure peaks at `overload`.
-    SpringSolverSettings exact;
-    exact.reference = true;
-    Result<StressResult> start = StrengthCriterionModel(criterion, exact)
-                                     .make_solver(graph, c.material)
-                                     ->reevaluate(loads, holed(graph, hole), every_node(graph));
+    Result<StressResult> start =
+        group.reference->make_solver(graph, c.material)->reevaluate(loads, holed(graph, hole), every_node(graph));
     if (!start) return Error{c.source.string() + ": " + start.error().message};
     double peak = 0.0;
     for (const BondStress& b : start->bonds)
@@ -222,9 +221,9 @@ Result<std::vector<AccuracyPoint>> cascade_accuracy(const Case& c, const Cascade
     material.tensile_strength *= k;
     material.compressive_strength *= k;
     material.shear_strength *= k;
-    Result<Reference> reference = reference_cascade(graph, loads, material, criterion, hole);
+    Result<Reference> reference = reference_cascade(graph, loads, material, *group.reference, hole);
     if (!reference) return Error{c.source.string() + ": " + reference.error().message};
-    for (const std::string& name : mine) {
+    for (const std::string& name : group.models) {
       Result<std::vector<Setting>> settings = model_settings(registries.stress_models, name);
       if (!settings) return settings.error();
       for (const Setting& s : *settings)

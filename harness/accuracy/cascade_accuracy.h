@@ -8,13 +8,12 @@
 /// first impact (the impact's hole), its strengths are scaled so that the exact solve of the holed
 /// structure puts its most utilized bond at `overload` (so that a cascade runs: the case's own
 /// strengths may break nothing), and `propagate` runs until stable. The reference is the exact
-/// rigid-body-spring cascade (Eigen's LDL^T per component, every round) with the model's criterion:
-/// Tresca for a model whose name starts with "tresca", von Mises otherwise.
+/// cascade of the model the model states as its reference (StressModel::exact_cascade_reference: for
+/// the rigid-body-spring models, Eigen's LDL^T per component, every round, with the model's criterion).
 
 #include "algorithms/core/result.h"
 #include "algorithms/registry/registries.h"
 #include "algorithms/stress/propagation.h"
-#include "algorithms/stress/strength_criterion.h"
 #include "harness/accuracy/accuracy_point.h"
 #include "harness/cases/case.h"
 
@@ -26,14 +25,13 @@ namespace shatter {
 
 /// What the cascade sweep runs.
 struct CascadeAccuracyOptions {
-  std::vector<std::string> models;   ///< registered names; every model driven by loads when empty
+  /// Registered names; when empty, every registered one. A model that states no exact cascade
+  /// reference (StressModel::exact_cascade_reference), built-in or plugin,
+  /// is left out: there is nothing to set its cascade against.
+  std::vector<std::string> models;
   double overload = 1.5;             ///< the largest utilization of the holed structure's exact solve, > 1
   int repetitions = 3;               ///< timed cascades per point (one solver kept for all), >= 1
 };
-
-/// The criterion of the exact cascade a model's cascade is set against: Tresca for a model whose name
-/// starts with "tresca", von Mises otherwise.
-Criterion reference_criterion(std::string_view model);
 
 /// How one cascade's outcome differs from a reference cascade's on the same structure.
 struct CascadeComparison {

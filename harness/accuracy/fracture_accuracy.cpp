@@ -1,11 +1,11 @@
 #include "harness/accuracy/fracture_accuracy.h"
 
 #include "algorithms/core/self_intersection_verdicts.h"
-#include "algorithms/fracture/fem_lite/fem_lite_fracturer.h"
 #include "harness/accuracy/fracture_replay.h"
 #include "harness/metrics/attribute_metrics.h"
 #include "harness/metrics/fracture_acceptance.h"
 #include "harness/metrics/fracture_metrics.h"
+#include "harness/plugins/capable_fracturer.h"
 #include "harness/results/attribute_metrics_json.h"
 
 #include <fmt/core.h>
@@ -26,8 +26,12 @@ struct Setting {
   std::optional<std::pair<std::string, double>> knob;  // the accuracy knob's key and value, when it has one
 };
 
+/// The exact reference that replays the plans, or why there is none.
+using Replayer = Result<std::unique_ptr<Fracturer>>;
+
 AccuracyPoint measure(const std::string& case_name, const Solid& solid, const std::optional<Impact>& impact,
-                      const Setting& s, const FractureAccuracyOptions& options, SelfIntersectionVerdicts& verdicts) {
+                      const Setting& s, const FractureAccuracyOptions& options, SelfIntersectionVerdicts& verdicts,
+                      const Replayer& replayer) {
   AccuracyPoint p;
   p.family = "fracture";
   p.case_name = case_name;
@@ -84,7 +88,11 @@ AccuracyPoint measure(const std::string& case_name, const Solid& solid, const st
     p.figures["failed_checks"] = failed;
     return p;
   }
-  Result<std::vector<Fragment>> exact = exact_replay(*s.fracturer, solid.mesh, params);
+  if (!replayer) {
+    p.figures["failed"] = "exact replay: " + replayer.error().message;
+    return p;
+  }
+  Result<std::vector<Fragment>> exact = exact_replay(*s.fracturer, *(*replayer)->cut_plan_replay(), solid.mesh, params);
   if (!exact) {
     p.figures["failed"] = "exact replay: " + exact.error().message;
     return p;
@@ -141,6 +149,7 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
       options.fracturers.empty() ? default_accuracy_fracturers(registries) : options.fracturers;
   std::vector<AccuracyPoint> points;
   SelfIntersectionVerdicts verdicts;  // the solid is checked once for every setting and repetition
+  const Replayer replayer = plan_replayer(registries.fracturers);
   for (const std::string& name : names) {
     const auto knobs = accuracy_knobs(registries, name, options.sweeps);
     for (const int n : options.fragments) {
@@ -152,7 +161,7 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
             continue;
           }
           Setting s{std::move(*f), n, std::make_pair(key, value)};
-          points.push_back(measure(case_name, solid, impact, s, options, verdicts));
+          points.push_back(measure(case_name, solid, impact, s, options, verdicts, replayer));
         }
       if (!knobs.empty()) continue;
       Result<std::unique_ptr<Fracturer>> f = registries.fracturers.create(name);
@@ -161,7 +170,7 @@ Result<std::vector<AccuracyPoint>> fracture_accuracy(const std::string& case_nam
         continue;
       }
       Setting s{std::move(*f), n, std::nullopt};
-      points.push_back(measure(case_name, solid, impact, s, options, verdicts));
+      points.push_back(measure(case_name, solid, impact, s, options, verdicts, replayer));
     }
   }
   return points;

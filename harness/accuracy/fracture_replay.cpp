@@ -1,7 +1,5 @@
 #include "harness/accuracy/fracture_replay.h"
 
-#include "algorithms/fracture/cgal_clip/cgal_clip_fracturer.h"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,11 +7,12 @@
 
 namespace shatter {
 
-Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const Mesh& solid, const FractureParams& params) {
+Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const CutPlanReplay& replayer, const Mesh& solid,
+                                           const FractureParams& params) {
   Result<std::optional<CutPlan>> plan = fracturer.cut_plan(solid, params);
   if (!plan) return plan.error();
   if (!plan->has_value()) return Error{"no exact replay for fracturer '" + std::string(fracturer.name()) + "'"};
-  return CgalClipFracturer().replay(solid, **plan);
+  return replayer.replay(solid, **plan);
 }
 
 ReplayMismatch replay_mismatch(const std::vector<Fragment>& fast, const std::vector<Fragment>& exact) {

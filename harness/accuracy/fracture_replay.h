@@ -1,5 +1,5 @@
 #pragma once
-/// A fracturer's output against the exact CGAL replay (cgal-clip) of the cuts it reports
+/// A fracturer's output against the exact reference's replay of the cuts it reports
 /// (Fracturer::cut_plan): plane-slice's cut schedule, voronoi's bisector cells, fem-lite's crack planes,
 /// or whatever plan a fracturer registered from outside the library states.
 
@@ -11,8 +11,10 @@
 namespace shatter {
 
 /// The exact replay of what `fracturer` does to `solid` with `params`: its cut plan replayed by
-/// CgalClipFracturer::replay. Error for a fracturer that states no cut plan (naming it).
-Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const Mesh& solid, const FractureParams& params);
+/// `replayer` (an exact reference that offers cut_plan_replay: plan_replayer, capable_fracturer.h).
+/// Error for a fracturer that states no cut plan (naming it).
+Result<std::vector<Fragment>> exact_replay(const Fracturer& fracturer, const CutPlanReplay& replayer, const Mesh& solid,
+                                           const FractureParams& params);
 
 /// How far fragments are from their exact replay.
 struct ReplayMismatch {

@@ -3,6 +3,7 @@
 #include "algorithms/stress/rigid_body_spring/strength_criterion_model.h"
 #include "harness/accuracy/beam_reference.h"
 #include "harness/pipeline/case_structure.h"
+#include "harness/plugins/capable_fracturer.h"
 
 #include <fmt/core.h>
 
@@ -189,8 +190,11 @@ Result<std::vector<AccuracyPoint>> stress_accuracy(const Case& c, const StressAc
   if (beam) {
     std::vector<int> counts = o.slabs;
     if (std::find(counts.begin(), counts.end(), o.solver_slabs) == counts.end()) counts.push_back(o.solver_slabs);
+    Result<std::unique_ptr<Fracturer>> cutter =
+        plane_cutter(registries.fracturers, c.prefracture.fracturer, c.prefracture.settings);
+    if (!cutter) return Error{c.source.string() + ": prefracture.planes: " + cutter.error().message};
     for (const int n : counts) {
-      Result<SupportGraph> g = beam_structure(*beam, n);
+      Result<SupportGraph> g = beam_structure(*beam, n, *(*cutter)->plane_cutting());
       if (!g) return Error{c.source.string() + ": " + g.error().message};
       Result<Structure> s = make_structure(std::move(*g), n, beam, loads, c.material);
       if (!s) return Error{c.source.string() + ": " + s.error().message};

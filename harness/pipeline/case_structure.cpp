@@ -2,6 +2,7 @@
 
 #include "harness/cases/case_mesh.h"
 #include "harness/pipeline/setup/offline_structure.h"
+#include "harness/plugins/capable_fracturer.h"
 
 #include <memory>
 #include <utility>
@@ -12,7 +13,11 @@ Result<CaseStructure> build_case_structure(const Case& c, const Registries& regi
   Result<Solid> solid = build_case_solid(c);
   if (!solid) return solid.error();
   std::unique_ptr<Fracturer> fracturer;
-  if (!c.prefracture.explicit_planes()) {
+  if (c.prefracture.explicit_planes()) {
+    auto cutter = plane_cutter(registries.fracturers, c.prefracture.fracturer, c.prefracture.settings);
+    if (!cutter) return Error{c.name + ": prefracture.planes: " + cutter.error().message};
+    fracturer = std::move(*cutter);
+  } else {
     auto created = registries.fracturers.create(c.prefracture.fracturer, c.prefracture.settings);
     if (!created) return Error{c.name + ": prefracture.fracturer: " + created.error().message};
     fracturer = std::move(*created);

@@ -20,7 +20,7 @@ struct CaseStructure {
   SupportGraph graph;                ///< bonds between the fragments, anchors from the case
 };
 
-/// The whole structure of `c`: its solid pre-fractured (explicit planes with the plane-slice kernel, or
+/// The whole structure of `c`: its solid pre-fractured (explicit planes cut by their plane_cutter, or
 /// the case's fracturer, count and seed; no cache) and its support graph at the case's density. Errors
 /// name the case key: an unknown fracturer (`prefracture.fracturer`), an anchor region that touches no
 /// fragment (`anchors[i]`), or a setting the fracturer refuses. The fracturer comes from `registries`,

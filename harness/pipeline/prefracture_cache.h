@@ -35,7 +35,7 @@ namespace shatter {
 
 /// What a pre-fracture was asked for; with the solid it makes the cache key.
 struct PrefractureKey {
-  std::string fracturer;         ///< registered name ("plane-slice" for explicit planes), then " " and its settings_text when it has settings
+  std::string fracturer;         ///< registered name (for explicit planes: the fracturer that cut them), then " " and its settings_text when it has settings
   int fragments = 0;             ///< requested count (0 for explicit planes)
   std::uint64_t seed = 0;        ///< seed (0 for explicit planes)
   std::vector<Plane> planes;     ///< explicit cuts, in order

@@ -47,7 +47,7 @@ struct RunState {
   StagePlan plan;              ///< the stages the case's needs imply
   RunResult result;            ///< everything measured and produced so far
 
-  std::unique_ptr<Fracturer> prefracturer;       ///< pre-fracture algorithm (none for explicit planes)
+  std::unique_ptr<Fracturer> prefracturer;       ///< pre-fracture algorithm (for explicit planes: their plane_cutter)
   std::unique_ptr<Fracturer> runtime_fracturer;  ///< runtime algorithm
   std::unique_ptr<StressModel> stress_model;     ///< stress model
   /// The stress model's solver of result.graph, made at the first solve and kept for the run (every

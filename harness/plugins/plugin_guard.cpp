@@ -51,10 +51,14 @@ Status check_cut_plan(const CutPlan& plan) {
   return {};
 }
 
-class GuardedFracturer final : public Fracturer {
+class GuardedFracturer final : public Fracturer, public PlaneCutting, public CutPlanReplay {
  public:
   GuardedFracturer(std::string name, std::unique_ptr<Fracturer> inner)
-      : name_(std::move(name)), who_("fracturer '" + name_ + "'"), inner_(std::move(inner)) {}
+      : name_(std::move(name)), who_("fracturer '" + name_ + "'"), inner_(std::move(inner)) {
+    // The capabilities are asked once; a plugin that throws when asked has none.
+    if (!contained(who_, [&] { inner_cutting_ = inner_->plane_cutting(); })) inner_cutting_ = nullptr;
+    if (!contained(who_, [&] { inner_replay_ = inner_->cut_plan_replay(); })) inner_replay_ = nullptr;
+  }
 
   [[nodiscard]] std::string_view name() const override { return name_; }
 
@@ -77,14 +81,17 @@ class GuardedFracturer final : public Fracturer {
     return std::move(*out);
   }
 
-  [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
-                                                                       std::span<const Plane> planes) const override {
-    std::optional<Result<std::optional<std::vector<Fragment>>>> out;
-    if (Status s = contained(who_, [&] { out.emplace(inner_->cut_by_planes(solid, planes)); }); !s) return s.error();
-    if (!*out) return outside_error(out->error());
-    if (**out)
-      if (Status s = check_fracture_output(solid, ***out, name_); !s) return fault(s);
-    return std::move(*out);
+  [[nodiscard]] const PlaneCutting* plane_cutting() const override { return inner_cutting_ ? this : nullptr; }
+
+  [[nodiscard]] Result<std::vector<Fragment>> cut_by_planes(const Mesh& solid,
+                                                            std::span<const Plane> planes) const override {
+    return checked_fragments(solid, [&] { return inner_cutting_->cut_by_planes(solid, planes); });
+  }
+
+  [[nodiscard]] const CutPlanReplay* cut_plan_replay() const override { return inner_replay_ ? this : nullptr; }
+
+  [[nodiscard]] Result<std::vector<Fragment>> replay(const Mesh& solid, const CutPlan& plan) const override {
+    return checked_fragments(solid, [&] { return inner_replay_->replay(solid, plan); });
   }
 
   [[nodiscard]] double volume_tolerance() const override {
@@ -102,9 +109,21 @@ class GuardedFracturer final : public Fracturer {
   }
 
  private:
+  /// `call`'s fragments of `solid`, contained and checked as fracture's are (round-off volume).
+  template <class Call>
+  Result<std::vector<Fragment>> checked_fragments(const Mesh& solid, Call&& call) const {
+    std::optional<Result<std::vector<Fragment>>> out;
+    if (Status s = contained(who_, [&] { out.emplace(call()); }); !s) return s.error();
+    if (!*out) return outside_error(out->error());
+    if (Status s = check_fracture_output(solid, **out, name_); !s) return fault(s);
+    return std::move(*out);
+  }
+
   std::string name_;
   std::string who_;
   std::unique_ptr<Fracturer> inner_;
+  const PlaneCutting* inner_cutting_ = nullptr;  // inner_'s, or null
+  const CutPlanReplay* inner_replay_ = nullptr;  // inner_'s, or null
 };
 
 /// A solver that could not be made: every evaluation is that error.
@@ -166,6 +185,15 @@ class GuardedStressModel final : public StressModel {
     bool driven = false;
     if (!contained(who_, [&] { driven = inner_->driven_by_loads(); })) return false;
     return driven;
+  }
+
+  [[nodiscard]] std::unique_ptr<StressModel> exact_cascade_reference() const override {
+    // A plugin that throws when asked states no reference; the reference it makes is guarded too.
+    std::unique_ptr<StressModel> reference;
+    if (!contained(who_, [&] { reference = inner_->exact_cascade_reference(); }) || reference == nullptr) return nullptr;
+    std::string name;
+    if (!contained(who_, [&] { name = std::string(reference->name()); })) return nullptr;
+    return std::make_unique<GuardedStressModel>(std::move(name), std::move(reference));
   }
 
   [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,

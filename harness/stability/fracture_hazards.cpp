@@ -4,8 +4,8 @@
 #include "algorithms/core/mesh_assembly.h"
 #include "algorithms/core/mesh_validation.h"
 #include "algorithms/core/primitives.h"
-#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "harness/metrics/fracture_metrics.h"
+#include "harness/plugins/capable_fracturer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -86,12 +86,13 @@ Result<std::vector<Fragment>> fracture_each(const Fracturer& f, const std::vecto
   return out;
 }
 
-Result<std::vector<Fragment>> run_once(const FractureHazard& h, const Fracturer& f, const Mesh& solid) {
+/// `h` run by `f` on `solid`. Exact planes are cut by `f` when it cuts by given planes; else `cutter`
+/// (a fracturer that does, chosen by run_fracture_hazard) cuts them and `f` fractures every piece.
+Result<std::vector<Fragment>> run_once(const FractureHazard& h, const Fracturer& f, const Fracturer* cutter,
+                                       const Mesh& solid) {
   if (!h.planes.empty()) {
-    Result<std::optional<std::vector<Fragment>>> cut = f.cut_by_planes(solid, h.planes);
-    if (!cut) return cut.error();
-    if (*cut) return std::move(**cut);
-    Result<std::vector<Fragment>> pieces = PlaneSliceFracturer().fracture_by_planes(solid, h.planes);
+    if (const PlaneCutting* own = f.plane_cutting()) return own->cut_by_planes(solid, h.planes);
+    Result<std::vector<Fragment>> pieces = cutter->plane_cutting()->cut_by_planes(solid, h.planes);
     if (!pieces) return pieces.error();
     return fracture_each(f, *pieces, h.params);
   }
@@ -175,7 +176,18 @@ HazardResult run_fracture_hazard(const FractureHazard& h, const std::string& alg
     r.detail = report.error().message;
     return r;
   }
-  Result<std::vector<Fragment>> first = run_once(h, **fracturer, solid);
+  // The exact cut for a fracturer that cannot cut by given planes: made by one that can.
+  std::unique_ptr<Fracturer> cutter;
+  if (!h.planes.empty() && (*fracturer)->plane_cutting() == nullptr) {
+    Result<std::unique_ptr<Fracturer>> chosen = plane_cutter(registries.fracturers);
+    if (!chosen) {
+      r.outcome = HazardOutcome::refused_valid_input;
+      r.detail = chosen.error().message;
+      return r;
+    }
+    cutter = std::move(*chosen);
+  }
+  Result<std::vector<Fragment>> first = run_once(h, **fracturer, cutter.get(), solid);
   if (!first) {
     r.outcome = refusal_outcome(first.error());
     if (r.outcome == HazardOutcome::rejected_input && !h.may_refuse) r.outcome = HazardOutcome::refused_valid_input;
@@ -208,7 +220,7 @@ HazardResult run_fracture_hazard(const FractureHazard& h, const std::string& alg
     r.detail = "partition error " + std::to_string(m.partition_error);
     return r;
   }
-  Result<std::vector<Fragment>> second = run_once(h, **fracturer, solid);
+  Result<std::vector<Fragment>> second = run_once(h, **fracturer, cutter.get(), solid);
   if (!second || !same_fragments(*first, *second)) {
     r.detail = "not deterministic: a second run gave different fragments";
     return r;

@@ -19,8 +19,9 @@ struct FractureHazard {
   std::string name;               ///< e.g. "cut-through-vertices"
   std::string description;        ///< one line
   Mesh mesh;                      ///< the raw input; validate_solid runs first, as for a file
-  /// Exact planes, cut in order. A fracturer that cuts by given planes (Fracturer::cut_by_planes)
-  /// cuts by them; the others fracture every piece of the exact cut (made by plane-slice) on their own.
+  /// Exact planes, cut in order. A fracturer that cuts by given planes (Fracturer::plane_cutting) cuts
+  /// by them; the others fracture every piece of the exact cut, made by the first registered fracturer
+  /// that cuts by given planes (plane_cutter, capable_fracturer.h).
   std::vector<Plane> planes;
   FractureParams params;          ///< fragments and seed when there are no planes
   bool refracture = false;        ///< fracture every fragment again with `params` (fragments of fragments)

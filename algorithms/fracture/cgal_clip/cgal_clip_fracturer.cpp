@@ -111,11 +111,9 @@ Result<std::vector<Fragment>> CgalClipFracturer::fracture(const Mesh& solid, con
   });
 }
 
-Result<std::optional<std::vector<Fragment>>> CgalClipFracturer::cut_by_planes(const Mesh& solid,
-                                                                            std::span<const Plane> planes) const {
-  Result<std::vector<Fragment>> pieces = fracture_by_planes(solid, planes);
-  if (!pieces) return pieces.error();
-  return std::optional<std::vector<Fragment>>(std::move(*pieces));
+Result<std::vector<Fragment>> CgalClipFracturer::cut_by_planes(const Mesh& solid,
+                                                               std::span<const Plane> planes) const {
+  return fracture_by_planes(solid, planes);
 }
 
 Result<std::vector<Fragment>> CgalClipFracturer::fracture_by_planes(const Mesh& solid,

@@ -23,20 +23,25 @@ inline constexpr int kMaxReferenceFragments = 250;
 /// Error "cgal-clip: at most 250 <what> (...), got <count>" past kMaxReferenceFragments, else success.
 Status check_reference_size(std::size_t count, const char* what);
 
-/// The cgal-clip reference fracturer.
-class CgalClipFracturer final : public Fracturer {
+/// The cgal-clip reference fracturer; it replays cut plans (CutPlanReplay) and cuts by given planes
+/// (PlaneCutting).
+class CgalClipFracturer final : public Fracturer, public PlaneCutting, public CutPlanReplay {
  public:
   [[nodiscard]] std::string_view name() const override { return "cgal-clip"; }
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
                                                        const FractureParams& params) const override;
   /// The exact reference: the others are replayed with it.
   [[nodiscard]] bool exact_reference() const override { return true; }
+  /// This fracturer: it replays cut plans.
+  [[nodiscard]] const CutPlanReplay* cut_plan_replay() const override { return this; }
+  /// This fracturer: it cuts by given planes.
+  [[nodiscard]] const PlaneCutting* plane_cutting() const override { return this; }
   /// Replays `plan` exactly: fracture() for a recursive schedule, fracture_by_planes() for planes,
   /// fracture_by_cells() for cells.
-  [[nodiscard]] Result<std::vector<Fragment>> replay(const Mesh& solid, const CutPlan& plan) const;
+  [[nodiscard]] Result<std::vector<Fragment>> replay(const Mesh& solid, const CutPlan& plan) const override;
   /// fracture_by_planes(solid, planes).
-  [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
-                                                                       std::span<const Plane> planes) const override;
+  [[nodiscard]] Result<std::vector<Fragment>> cut_by_planes(const Mesh& solid,
+                                                            std::span<const Plane> planes) const override;
   /// Cuts `solid` by each plane in turn, as PlaneSliceFracturer::fracture_by_planes.
   [[nodiscard]] Result<std::vector<Fragment>> fracture_by_planes(const Mesh& solid,
                                                                  std::span<const Plane> planes) const;

@@ -33,11 +33,9 @@ Result<std::vector<Fragment>> PlaneSliceFracturer::fracture(const Mesh& solid,
                       tracking);
 }
 
-Result<std::optional<std::vector<Fragment>>> PlaneSliceFracturer::cut_by_planes(const Mesh& solid,
-                                                                              std::span<const Plane> planes) const {
-  Result<std::vector<Fragment>> pieces = fracture_by_planes(solid, planes);
-  if (!pieces) return pieces.error();
-  return std::optional<std::vector<Fragment>>(std::move(*pieces));
+Result<std::vector<Fragment>> PlaneSliceFracturer::cut_by_planes(const Mesh& solid,
+                                                                 std::span<const Plane> planes) const {
+  return fracture_by_planes(solid, planes);
 }
 
 Result<std::vector<Fragment>> PlaneSliceFracturer::fracture_by_planes(const Mesh& solid, std::span<const Plane> planes,

@@ -12,8 +12,8 @@
 
 namespace shatter {
 
-/// The plane-slice fracturer.
-class PlaneSliceFracturer final : public Fracturer {
+/// The plane-slice fracturer; it cuts by given planes too (PlaneCutting).
+class PlaneSliceFracturer final : public Fracturer, public PlaneCutting {
  public:
   [[nodiscard]] std::string_view name() const override { return "plane-slice"; }
   [[nodiscard]] Result<std::vector<Fragment>> fracture(const Mesh& solid,
@@ -21,9 +21,11 @@ class PlaneSliceFracturer final : public Fracturer {
   /// Its own recursive schedule (fragments and seed of `params`).
   [[nodiscard]] Result<std::optional<CutPlan>> cut_plan(const Mesh& solid,
                                                         const FractureParams& params) const override;
+  /// This fracturer: it cuts by given planes.
+  [[nodiscard]] const PlaneCutting* plane_cutting() const override { return this; }
   /// fracture_by_planes(solid, planes).
-  [[nodiscard]] Result<std::optional<std::vector<Fragment>>> cut_by_planes(const Mesh& solid,
-                                                                       std::span<const Plane> planes) const override;
+  [[nodiscard]] Result<std::vector<Fragment>> cut_by_planes(const Mesh& solid,
+                                                            std::span<const Plane> planes) const override;
   /// What fracture_by_planes does when a plane crosses a piece but the cut cannot be made soundly
   /// (mesh_slicer.h, docs/plugins.md "The cutting kernel").
   enum class FailedCut {

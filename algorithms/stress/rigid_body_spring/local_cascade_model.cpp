@@ -13,6 +13,10 @@ std::unique_ptr<StressSolver> LocalCascadeModel::make_solver(const SupportGraph&
   return std::make_unique<LocalCascadeSolver>(graph, material, criterion_, settings_, hops_, exact_start_);
 }
 
+std::unique_ptr<StressModel> LocalCascadeModel::exact_cascade_reference() const {
+  return StrengthCriterionModel(criterion_).exact_cascade_reference();
+}
+
 namespace {
 
 std::vector<SettingDoc> local_setting_docs() {

@@ -27,6 +27,8 @@ class LocalCascadeModel final : public StressModel {
   /// A LocalCascadeSolver (local_cascade_solver.h) for `graph` and `material`.
   [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
                                                           const Material& material) const override;
+  /// The whole-structure model of this criterion with the reference solves (StrengthCriterionModel).
+  [[nodiscard]] std::unique_ptr<StressModel> exact_cascade_reference() const override;
   /// Bonds around a break whose nodes a cascade round solves again.
   [[nodiscard]] int hops() const { return hops_; }
   /// Whether a cascade's start is solved exactly.

@@ -11,6 +11,12 @@ std::unique_ptr<StressSolver> StrengthCriterionModel::make_solver(const SupportG
   return std::make_unique<StrengthCriterionSolver>(graph, material, criterion_, settings_);
 }
 
+std::unique_ptr<StressModel> StrengthCriterionModel::exact_cascade_reference() const {
+  SpringSolverSettings exact;
+  exact.reference = true;
+  return std::make_unique<StrengthCriterionModel>(criterion_, exact);
+}
+
 std::vector<SettingDoc> spring_solver_setting_docs() {
   return {{"tolerance", "", "1e-06", "(0, 1]", "relative residual |K u - f| / |f| a converged solve may leave (or cg_tolerance, if larger)", {}},
           {"max_iterations", "iterations", "20000", "[1, 1000000000]", "CG iterations per block before giving up", {}},

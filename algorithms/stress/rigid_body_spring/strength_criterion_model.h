@@ -24,6 +24,9 @@ class StrengthCriterionModel final : public StressModel {
   /// A StrengthCriterionSolver (strength_criterion_solver.h) for `graph` and `material`.
   [[nodiscard]] std::unique_ptr<StressSolver> make_solver(const SupportGraph& graph,
                                                           const Material& material) const override;
+  /// This criterion with the reference solves (SpringSolverSettings::reference): Eigen's LDL^T per
+  /// component, every round.
+  [[nodiscard]] std::unique_ptr<StressModel> exact_cascade_reference() const override;
 
  private:
   Criterion criterion_;

@@ -1,8 +1,8 @@
 #include "harness/pipeline/setup/offline_structure.h"
 
-#include "algorithms/fracture/plane_slice/plane_slice_fracturer.h"
 #include "algorithms/core/mesh.h"
 
+#include <cassert>
 #include <string>
 #include <utility>
 
@@ -16,7 +16,7 @@ bool overlaps(const Aabb& a, const Aabb& b) {
 PrefractureKey key_for(const Case& c, const OfflineSetupRequest& request) {
   PrefractureKey key;
   if (c.prefracture.explicit_planes()) {
-    key.fracturer = "plane-slice";
+    key.fracturer = std::string(request.fracturer->name());
     key.planes = c.prefracture.planes;
   } else {
     key.fracturer = std::string(request.fracturer->name());
@@ -29,7 +29,7 @@ PrefractureKey key_for(const Case& c, const OfflineSetupRequest& request) {
 
 Result<std::vector<Fragment>> fracture_solid(const Case& c, const Solid& solid, const OfflineSetupRequest& request) {
   if (c.prefracture.explicit_planes()) {
-    auto fragments = PlaneSliceFracturer().fracture_by_planes(solid.mesh, c.prefracture.planes);
+    auto fragments = request.fracturer->plane_cutting()->cut_by_planes(solid.mesh, c.prefracture.planes);
     if (!fragments) return Error{c.name + ": prefracture.planes: " + fragments.error().message};
     return fragments;
   }
@@ -61,6 +61,7 @@ Result<std::vector<std::uint8_t>> anchored_fragments(const Case& c, const std::v
 
 Result<OfflineStructure> build_offline_structure(const Case& c, const Solid& solid, const OfflineSetupRequest& request,
                                                  StageClocks& setup, StageLog& stages) {
+  assert(request.fracturer != nullptr && (!c.prefracture.explicit_planes() || request.fracturer->plane_cutting()));
   OfflineStructure out;
   out.key = key_for(c, request);
   {

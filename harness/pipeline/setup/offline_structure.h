@@ -1,7 +1,7 @@
 #pragma once
 /// The offline setup of a case's structure, written once for every user: the destruction run, the
-/// `stress` command and the stress accuracy runs. Pre-fracture (explicit planes with the plane-slice
-/// kernel, or a fracturer; through the cache when one is given), the anchor regions, the support graph.
+/// `stress` command and the stress accuracy runs. Pre-fracture (explicit planes cut by a fracturer that
+/// cuts by given planes, or a fracturer's own fracture; through the cache when one is given), the anchor regions, the support graph.
 /// Each part is timed in the setup clocks and recorded in the stage log (docs/pipeline.md section 1).
 
 #include "algorithms/bonds/support_graph.h"
@@ -20,7 +20,9 @@ namespace shatter {
 
 /// How the offline setup pre-fractures a case's solid and what it builds after.
 struct OfflineSetupRequest {
-  const Fracturer* fracturer = nullptr;      ///< pre-fracture algorithm; unused (may be null) for explicit planes
+  /// Pre-fracture algorithm, never null; for explicit planes one that cuts by given planes
+  /// (Fracturer::plane_cutting: plane_cutter, harness/plugins/capable_fracturer.h).
+  const Fracturer* fracturer = nullptr;
   std::string settings;                      ///< settings_text of its settings ("" for none), part of the cache key
   int fragments = 0;                         ///< requested fragment count (ignored for explicit planes)
   std::uint64_t seed = 0;                    ///< pre-fracture seed (ignored for explicit planes)

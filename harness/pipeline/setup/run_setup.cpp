@@ -6,6 +6,7 @@
 #include "harness/pipeline/frame/frame_recorder.h"
 #include "harness/pipeline/setup/offline_structure.h"
 #include "harness/pipeline/structure_response.h"
+#include "harness/plugins/capable_fracturer.h"
 
 #include <algorithm>
 #include <string>
@@ -151,7 +152,11 @@ void build_world(RunState& run) {
 Status create_run_algorithms(RunState& run) {
   const Case& c = run.spec;
   const Registries& reg = run.registries;
-  if (!c.prefracture.explicit_planes()) {
+  if (c.prefracture.explicit_planes()) {
+    auto f = plane_cutter(reg.fracturers, c.prefracture.fracturer, c.prefracture.settings);
+    if (!f) return Error{c.name + ": prefracture.planes: " + f.error().message};
+    run.prefracturer = std::move(*f);
+  } else {
     const std::string& name = run.settings.prefracture_fracturer;
     auto f = reg.fracturers.create(name, settings_for(name, c.prefracture.fracturer, c.prefracture.settings));
     if (!f) return Error{c.name + ": prefracture.fracturer: " + f.error().message};

@@ -6,6 +6,7 @@
 #include "harness/cases/case_mesh.h"
 #include "harness/pipeline/case_structure.h"
 #include "harness/pipeline/setup/offline_structure.h"
+#include "harness/plugins/capable_fracturer.h"
 
 #include <catch2/catch.hpp>
 
@@ -31,11 +32,11 @@ Fixture fixture(const std::string& name) {
   Result<Solid> solid = build_case_solid(*c);
   REQUIRE(solid);
   Fixture f{std::move(*c), std::move(*solid), nullptr};
-  if (!f.spec.prefracture.explicit_planes()) {
-    auto fracturer = test::builtin_registries().fracturers.create(f.spec.prefracture.fracturer);
-    REQUIRE(fracturer);
-    f.fracturer = std::move(*fracturer);
-  }
+  const Registries r = test::builtin_registries();
+  auto fracturer = f.spec.prefracture.explicit_planes() ? plane_cutter(r.fracturers, f.spec.prefracture.fracturer)
+                                                        : r.fracturers.create(f.spec.prefracture.fracturer);
+  REQUIRE(fracturer);
+  f.fracturer = std::move(*fracturer);
   return f;
 }
 
