@@ -316,12 +316,12 @@ bool NodeBlockCholesky::factorize(const Eigen::SparseMatrix<double>& lower) {
 }
 
 template <int G>
-void NodeBlockCholesky::solve_blocks(double* x) const {
+void NodeBlockCholesky::solve_blocks(double* x, bool forward) const {
   using Vec = Eigen::Matrix<double, G, 1>;
   using Block = Eigen::Matrix<double, G, G>;
   constexpr int kEntries = G * G;
   const auto segment = [&](int j) { return Eigen::Map<Vec>(x + static_cast<std::size_t>(j) * G); };
-  for (int j = 0; j < nodes_; ++j) {  // L y = b
+  for (int j = 0; forward && j < nodes_; ++j) {  // L y = b
     const Eigen::Map<const Block> inverse_jj(diagonal_.data() + static_cast<std::size_t>(j) * kEntries);
     const Vec y = inverse_jj * segment(j);
     segment(j) = y;
@@ -362,6 +362,17 @@ void NodeBlockCholesky::path_columns(int node, std::vector<int>& path, std::vect
   }
 }
 
+double NodeBlockCholesky::path_blocks(int node, int& path_length) const {
+  path_length = 0;
+  if (!factorised_ || !analysed()) return 0.0;
+  double blocks = 0.0;
+  for (int j = position_[static_cast<std::size_t>(node)]; j >= 0; j = parent_[static_cast<std::size_t>(j)]) {
+    blocks += column_start_[static_cast<std::size_t>(j) + 1] - column_start_[static_cast<std::size_t>(j)];
+    ++path_length;
+  }
+  return blocks;
+}
+
 void NodeBlockCholesky::inverse_factor_columns(int node, std::vector<int>& path, std::vector<double>& columns) const {
   path.clear();
   columns.clear();
@@ -376,6 +387,26 @@ void NodeBlockCholesky::inverse_factor_columns(int node, std::vector<int>& path,
     case 6: path_columns<6>(node, path, columns); break;
     default: break;
   }
+}
+
+Eigen::VectorXd NodeBlockCholesky::solve_transposed_factor(const Eigen::VectorXd& y) const {
+  if (!factorised_ || !analysed()) return Eigen::VectorXd::Constant(y.size(), std::numeric_limits<double>::quiet_NaN());
+  const int g = size_;
+  assert(y.size() == static_cast<Eigen::Index>(nodes_) * g);
+  Eigen::VectorXd x = y;
+  switch (size_) {
+    case 1: solve_blocks<1>(x.data(), false); break;
+    case 2: solve_blocks<2>(x.data(), false); break;
+    case 3: solve_blocks<3>(x.data(), false); break;
+    case 4: solve_blocks<4>(x.data(), false); break;
+    case 5: solve_blocks<5>(x.data(), false); break;
+    case 6: solve_blocks<6>(x.data(), false); break;
+    default: break;
+  }
+  Eigen::VectorXd out(y.size());
+  for (int k = 0; k < nodes_; ++k)
+    for (int t = 0; t < g; ++t) out[order_[static_cast<std::size_t>(k)] * g + t] = x[k * g + t];
+  return out;
 }
 
 double NodeBlockCholesky::pivot_ratio() const {

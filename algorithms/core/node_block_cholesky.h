@@ -58,6 +58,10 @@ class NodeBlockCholesky {
   [[nodiscard]] int rows_refactorised() const { return rows_refactorised_; }
   /// Solves K x = b with the current factor (NaN everywhere when the last factorisation failed).
   [[nodiscard]] Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// x = L^-T y: the second half of a solve, for `y` in elimination order (the unknowns of the node at
+  /// elimination position k at g k .. g k + g - 1), `x` in the original order (NaN everywhere when
+  /// the last factorisation failed). With inverse_factor_columns, K^-1 P w = L^-T (L^-1 P) w.
+  [[nodiscard]] Eigen::VectorXd solve_transposed_factor(const Eigen::VectorXd& y) const;
   /// The nodes in elimination order (AMD on the node graph), empty before analysis.
   [[nodiscard]] std::span<const int> node_order() const { return order_; }
   /// Unknowns per node (g), 0 before analysis.
@@ -69,6 +73,9 @@ class NodeBlockCholesky {
   /// few nodes' block of K^-1 = (L^-1 P)^T (L^-1 P) is cheap (a capacitance matrix). Both empty when
   /// not factorised.
   void inverse_factor_columns(int node, std::vector<int>& path, std::vector<double>& columns) const;
+  /// Blocks of L that inverse_factor_columns(`node`) reads (each a g x g by g x g product), and the
+  /// length of its path in `path_length`; 0 when not factorised.
+  [[nodiscard]] double path_blocks(int node, int& path_length) const;
 
  private:
   /// The analysis' arrays are all there (not so in a moved-from object).
@@ -83,7 +90,7 @@ class NodeBlockCholesky {
   template <int G>
   bool factorize_blocks(const double* values, bool all_rows);
   template <int G>
-  void solve_blocks(double* x) const;
+  void solve_blocks(double* x, bool forward = true) const;
   template <int G>
   void path_columns(int node, std::vector<int>& path, std::vector<double>& columns) const;
 

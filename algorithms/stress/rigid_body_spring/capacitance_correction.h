@@ -37,9 +37,15 @@ class CapacitanceCorrection {
   [[nodiscard]] bool has_base() const { return has_base_; }
   /// Brings the correction to the values of `lower` (the factor's pattern, lower triangle, g unknowns
   /// per node as in `factor`): every node with an entry that differs from the base goes into P.
-  /// False, and nothing usable, when they hold more than `max_unknowns` unknowns or the capacitance is
-  /// numerically singular (reciprocal condition below 1e-12): refactorise then.
-  bool update(const NodeBlockCholesky& factor, const Eigen::SparseMatrix<double>& lower, int max_unknowns);
+  /// False, and nothing usable, when the update would take more than `max_flops` (its estimate, see
+  /// last_flops), P would hold more than kMaxUnknowns unknowns, or the capacitance is numerically
+  /// singular (reciprocal condition below 1e-12): refactorise then.
+  bool update(const NodeBlockCholesky& factor, const Eigen::SparseMatrix<double>& lower, double max_flops);
+  /// The estimated flops of the last update: the new nodes' columns of L^-1 P, G's new blocks and the
+  /// capacitance's LU.
+  [[nodiscard]] double last_flops() const { return last_flops_; }
+  /// The most unknowns P may hold (the capacitance is dense).
+  static constexpr int kMaxUnknowns = 600;
   /// True when some node differs from the base (otherwise a solve is the factor's own).
   [[nodiscard]] bool active() const { return !nodes_.empty(); }
   /// Unknowns in P.
@@ -49,6 +55,7 @@ class CapacitanceCorrection {
 
  private:
   bool has_base_ = false;
+  double last_flops_ = 0.0;
   std::vector<double> base_;                  // K_B's values, lower's value order
   int size_ = 0;                              // g, unknowns per node
   std::vector<int> nodes_;                    // the nodes in P, in the order they came
@@ -56,8 +63,11 @@ class CapacitanceCorrection {
   std::vector<std::vector<int>> paths_;       // per node in P: its path (elimination positions)
   std::vector<std::vector<double>> columns_;  // per node in P: L^-1 P on its path, g x g blocks
   Eigen::MatrixXd g_;                         // G = P^T K_B^-1 P
-  Eigen::MatrixXd e_;                         // E = P^T (K_B - K) P
+  Eigen::SparseMatrix<double> e_;             // E = P^T (K_B - K) P
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance_;  // I - G E
+  // K_B^-1 b for the last b solved (the loads, in every round of a cascade), until the base changes.
+  mutable bool has_z_ = false;
+  mutable Eigen::VectorXd z_rhs_, z_;
 };
 
 }  // namespace shatter

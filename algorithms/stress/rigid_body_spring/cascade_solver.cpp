@@ -127,7 +127,7 @@ bool CascadeSolver::factorize(Block& block, bool correct) {
   for (std::size_t i = 0; i < block.source.size(); ++i) out[i] = value[block.source[i]];
   const NodeBlockCholesky* node_blocks = block.cholesky->node_blocks();
   if (correct && node_blocks && block.correction.has_base() &&
-      block.correction.update(*node_blocks, block.lower, kMaxCorrectedUnknowns)) {
+      block.correction.update(*node_blocks, block.lower, kCorrectionFlopShare * node_blocks->factor_flops())) {
     block.corrected = true;
     block.factorised = true;
     return true;

@@ -18,7 +18,7 @@
 ///
 /// A round that continues the rounds before it (its input is this solver's last output) does not
 /// refactorise a block whose changes since its last factorisation hold at most
-/// kMaxCorrectedUnknowns unknowns: it solves through that factor with a capacitance correction
+/// kCorrectionFlopShare of a factorisation to correct: it solves through that factor with a capacitance correction
 /// (capacitance_correction.h), refined against the whole K like every direct solve, and refactorises
 /// after all when the refined residual is above kMaxCorrectedResidual. Any other round refactorises
 /// (bit for bit a factorisation from scratch), so what a round gives depends only on the rounds since
@@ -39,8 +39,10 @@
 
 namespace shatter {
 
-/// Unknowns of a block's changed nodes up to which a continuing round corrects instead of refactorising.
-inline constexpr int kMaxCorrectedUnknowns = 150;
+/// A continuing round corrects a block instead of refactorising it while the correction's update is
+/// estimated at most this share of a factorisation's flops (a round's partial refactorisation costs
+/// about half of one on the walls, docs/stress.md section 3a).
+inline constexpr double kCorrectionFlopShare = 0.3;
 /// The largest relative residual |f - K u| / |f| a corrected round may end with; above it the round
 /// refactorises and solves again.
 inline constexpr double kMaxCorrectedResidual = 1e-11;
