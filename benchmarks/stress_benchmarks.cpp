@@ -118,15 +118,17 @@ void evaluate_wall(benchmark::State& state, const Registries& registries, const 
   add_counters(state, g, report);
 }
 
-/// The exact cascade of the model's reference criterion (cascade_accuracy.h),
-/// made once per structure, hole and strength: what an approximate model's outcome is set against.
-const PropagationResult& exact_cascade(const std::string& model_name, const SupportGraph& g,
-                                       std::span<const int> broken, const Material& material) {
-  static std::map<std::tuple<Criterion, const SupportGraph*, std::vector<int>, double>, PropagationResult> cache;
-  const Criterion criterion = reference_criterion(model_name);
-  auto [slot, made] =
-      cache.try_emplace({criterion, &g, std::vector<int>(broken.begin(), broken.end()), material.tensile_strength});
-  if (made) slot->second = propagate(StrengthCriterionModel(criterion), g, Loads{}, material, broken).value();
+/// The exact cascade the model states as its reference (StressModel::exact_cascade_reference), made
+/// once per model, structure, hole and strength: what the model's outcome is set against.
+const PropagationResult& exact_cascade(const StressModel& model, const SupportGraph& g, std::span<const int> broken,
+                                       const Material& material) {
+  static std::map<std::tuple<std::string, const SupportGraph*, std::vector<int>, double>, PropagationResult> cache;
+  auto [slot, made] = cache.try_emplace(
+      {std::string(model.name()), &g, std::vector<int>(broken.begin(), broken.end()), material.tensile_strength});
+  if (made) {
+    const std::unique_ptr<StressModel> reference = model.exact_cascade_reference();
+    slot->second = propagate(reference ? *reference : model, g, Loads{}, material, broken).value();
+  }
   return slot->second;
 }
 
@@ -136,7 +138,7 @@ void run_cascade(benchmark::State& state, const std::unique_ptr<StressModel>& mo
                  std::span<const int> broken, double tensile_strength, Pool pool) {
   Material weak;  // a weak mortar, so that the hole makes something else fail
   weak.tensile_strength = tensile_strength;
-  const PropagationResult& exact = exact_cascade(std::string(model->name()), g, broken, weak);
+  const PropagationResult& exact = exact_cascade(*model, g, broken, weak);
   PropagationResult last;
   std::unique_ptr<StressSolver> solver;
   for (auto _ : state) {
