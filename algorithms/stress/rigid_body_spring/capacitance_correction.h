@@ -13,8 +13,9 @@
 /// (NodeBlockCholesky::inverse_factor_columns), so a node costs its path's share of L, and a solve
 /// costs two triangular solves with L and a dense solve with the capacitance I - G E. A node stays
 /// in P (its columns kept) until the next refactorisation, so a round pays only for its new nodes and
-/// the dense factorisation of the capacitance, which grows as the square and the cube of their count:
-/// past `max_unknowns` the caller refactorises instead (cascade_solver.h).
+/// the dense factorisation of the capacitance, which grows as the cube of their count; an update
+/// estimated dearer than the caller's limit is refused, and the caller refactorises instead
+/// (cascade_solver.h).
 
 #include "algorithms/core/node_block_cholesky.h"
 

@@ -17,8 +17,8 @@
 /// that has grown above the decoupling tolerance once bonds broke.
 ///
 /// A round that continues the rounds before it (its input is this solver's last output) does not
-/// refactorise a block whose changes since its last factorisation hold at most
-/// kCorrectionFlopShare of a factorisation to correct: it solves through that factor with a capacitance correction
+/// refactorise a block whose changes since its last factorisation cost at most kCorrectionFlopShare
+/// of a factorisation to correct: it solves through that factor with a capacitance correction
 /// (capacitance_correction.h), refined against the whole K like every direct solve, and refactorises
 /// after all when the refined residual is above kMaxCorrectedResidual. Any other round refactorises
 /// (bit for bit a factorisation from scratch), so what a round gives depends only on the rounds since
