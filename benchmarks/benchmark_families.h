@@ -9,6 +9,10 @@ namespace shatter {
 /// self-intersection/ families); `registries` must outlive the benchmark run.
 void register_fracture_benchmarks(const Registries& registries);
 
+/// big-mesh/{read/off,read/obj,solid,metrics,fracture,command}: the fracture command's stages on
+/// armadillo subdivided twice (832k triangles, generated on first use); `registries` must outlive the run.
+void register_big_mesh_benchmarks(const Registries& registries);
+
 /// attributes/<mesh>/<fracturer>/{geometry,attributes}/<n>: each fracturer on one solid with and
 /// without attributes (attribute_benchmarks.cpp); `registries` must outlive the benchmark run.
 void register_attribute_benchmarks(const Registries& registries);

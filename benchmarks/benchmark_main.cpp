@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
   shatter::Registries registries;
   shatter::register_all(registries);
   shatter::register_fracture_benchmarks(registries);
+  shatter::register_big_mesh_benchmarks(registries);
   shatter::register_attribute_benchmarks(registries);
   shatter::register_collider_benchmarks(registries);
   shatter::register_physics_benchmarks(registries);

@@ -48,36 +48,46 @@ struct PartitionResult {
 };
 
 // Samples up to `wanted` points inside `input` and counts those inside zero or several fragments.
+// The input's winding numbers come first and its structure is freed; then the fragments are taken
+// one at a time, so that no more than one fragment's structure is held at once.
 PartitionResult sample_partition(const Mesh& input, std::span<const Fragment> fragments,
                                  const FractureMetricsOptions& options) {
   PartitionResult result;
   const int wanted = options.partition_samples;
   if (wanted <= 0 || input.empty()) return result;
 
-  // Most samples lie far from every surface: a lookup answers them (winding_number_cells.h).
-  const WindingNumberCells inside_input(input);
-  const Aabb& box = inside_input.bounds();
-  std::vector<WindingNumberCells> inside_fragment;
-  inside_fragment.reserve(fragments.size());
-  for (const Fragment& fragment : fragments) inside_fragment.emplace_back(fragment.mesh);
-
-  SplitMix64 rng(options.seed);
-  const long long max_draws = static_cast<long long>(wanted) * std::max(1, options.max_draws_per_sample);
-  for (long long draw = 0; draw < max_draws && result.samples < wanted; ++draw) {
-    const Vec3 p = rng.point_in(box.min, box.max);
-    // An input made of overlapping shells covers a point several times; the fragments must cover it
-    // as often as the input does (once, for an ordinary solid).
-    const long expected = std::lround(inside_input(p));
-    if (expected < 1) continue;
-    ++result.samples;
-    long containing = 0;
-    for (const WindingNumberCells& fragment : inside_fragment) {
-      // Culling: outside a closed fragment's box the point is outside the fragment.
-      if (!fragment.bounds().contains(p)) continue;
-      if (fragment(p) > 0.5 && ++containing > expected) break;  // already too many
+  struct Sample {
+    Vec3 point;
+    long expected = 0;    // how often the input covers the point
+    long containing = 0;  // fragments holding it
+  };
+  std::vector<Sample> samples;
+  {
+    // Most samples lie far from every surface: a lookup answers them (winding_number_cells.h).
+    const WindingNumberCells inside_input(input);
+    const Aabb& box = inside_input.bounds();
+    SplitMix64 rng(options.seed);
+    const long long max_draws = static_cast<long long>(wanted) * std::max(1, options.max_draws_per_sample);
+    for (long long draw = 0; draw < max_draws && static_cast<int>(samples.size()) < wanted; ++draw) {
+      const Vec3 p = rng.point_in(box.min, box.max);
+      // An input made of overlapping shells covers a point several times; the fragments must cover it
+      // as often as the input does (once, for an ordinary solid).
+      const long expected = std::lround(inside_input(p));
+      if (expected >= 1) samples.push_back({p, expected, 0});
     }
-    if (containing != expected) ++result.errors;
   }
+  for (const Fragment& fragment : fragments) {
+    const Aabb fragment_box = bounding_box(fragment.mesh);
+    // Culling: outside a closed fragment's box the point is outside the fragment.
+    if (std::none_of(samples.begin(), samples.end(), [&](const Sample& s) { return fragment_box.contains(s.point); }))
+      continue;
+    const WindingNumberCells inside_fragment(fragment.mesh);
+    for (Sample& s : samples)
+      if (s.containing <= s.expected && inside_fragment.bounds().contains(s.point) && inside_fragment(s.point) > 0.5)
+        ++s.containing;
+  }
+  result.samples = static_cast<int>(samples.size());
+  for (const Sample& s : samples) result.errors += s.containing != s.expected ? 1 : 0;
   return result;
 }
 
