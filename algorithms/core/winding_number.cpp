@@ -58,7 +58,7 @@ WindingNumberQuery::WindingNumberQuery(const Mesh& mesh) {
   std::vector<Keyed> order(mesh.triangles.size());
   for (std::size_t f = 0; f < order.size(); ++f) {
     const Triangle& t = mesh.triangles[f];
-    for (const std::int32_t v : t) assert(v >= 0 && static_cast<std::size_t>(v) < mesh.vertices.size());
+    assert(std::all_of(t.begin(), t.end(), [&](std::int32_t v) { return v >= 0 && static_cast<std::size_t>(v) < mesh.vertices.size(); }));
     order[f] = {mesh.vertices[static_cast<std::size_t>(t[0])] + mesh.vertices[static_cast<std::size_t>(t[1])] +
                     mesh.vertices[static_cast<std::size_t>(t[2])],
                 t};
@@ -70,11 +70,9 @@ WindingNumberQuery::WindingNumberQuery(const Mesh& mesh) {
   build(mesh, order, 0, 0, static_cast<int>(order.size()), boundary);
   closed_ = boundary.empty();
   bounds_ = nodes_[0].box;
+  points_ = mesh.vertices;
   triangles_.reserve(order.size());
-  for (const auto& [sum, t] : order) {
-    triangles_.push_back({mesh.vertices[static_cast<std::size_t>(t[0])], mesh.vertices[static_cast<std::size_t>(t[1])],
-                          mesh.vertices[static_cast<std::size_t>(t[2])]});  // indices checked in build()
-  }
+  for (const Keyed& k : order) triangles_.push_back(k.triangle);  // indices checked in build()
 }
 
 // Builds node `node` over order[begin, end) and its subtree; appends the node's boundary to `edges`:
@@ -160,7 +158,7 @@ void WindingNumberQuery::build(const Mesh& mesh, std::vector<Keyed>& order, int 
       const std::int32_t apex = boundary.front().from;
       for (const Edge& e : boundary) {
         if (e.from == apex || e.to == apex) continue;
-        for (int c = 0; c < e.count; ++c) fans_.push_back({point(apex), point(e.from), point(e.to)});
+        for (int c = 0; c < e.count; ++c) fans_.push_back({apex, e.from, e.to});
       }
     }
     n.fan_end = static_cast<int>(fans_.size());
@@ -172,11 +170,12 @@ double WindingNumberQuery::operator()(const Vec3& q) const {
   // Outside the box of a closed surface: exactly 0 (also covers a mesh without triangles, whose
   // box is empty and contains nothing).
   if (!bounds_.contains(q)) return 0.0;
-  auto sum_over = [&q](const std::vector<Corners>& corners, int begin, int end) {
+  auto sum_over = [this, &q](const std::vector<Triangle>& triangles, int begin, int end) {
     double sum = 0.0;
     for (int i = begin; i < end; ++i) {
-      const Corners& t = corners[static_cast<std::size_t>(i)];
-      sum += relative_solid_angle(t[0] - q, t[1] - q, t[2] - q);
+      const Triangle& t = triangles[static_cast<std::size_t>(i)];
+      sum += relative_solid_angle(points_[static_cast<std::size_t>(t[0])] - q, points_[static_cast<std::size_t>(t[1])] - q,
+                                  points_[static_cast<std::size_t>(t[2])] - q);
     }
     return sum;
   };

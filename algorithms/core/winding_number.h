@@ -37,7 +37,7 @@ double winding_number(const Mesh& mesh, const Vec3& q);
 /// only the shortcut at the root (0 outside the whole box) needs the mesh to be closed.
 class WindingNumberQuery {
  public:
-  /// Builds the tree over `mesh` (#F triangles; copies the corners, O(#F log #F)).
+  /// Builds the tree over `mesh` (#F triangles; copies the positions, O(#F log #F)).
   explicit WindingNumberQuery(const Mesh& mesh);
 
   /// Winding number at `q`; exactly 0 when `q` is outside bounds().
@@ -54,7 +54,6 @@ class WindingNumberQuery {
   [[nodiscard]] bool closed() const { return closed_; }
 
  private:
-  using Corners = std::array<Vec3, 3>;
   // A tree node: triangles_[begin, end) and, for an inner node with a small enough boundary, the
   // boundary fan in fans_[fan_begin, fan_end) (fan_begin < 0: no fan, always descend).
   struct Node {
@@ -77,8 +76,11 @@ class WindingNumberQuery {
 
   void build(const Mesh& mesh, std::vector<Keyed>& order, int node, int begin, int end, std::vector<Edge>& edges);
 
-  std::vector<Corners> triangles_;  // #F corners in tree order
-  std::vector<Corners> fans_;       // boundary fans of the inner nodes, edges in their own direction
+  // Triangles as indices into the tree's own copy of the positions (12 bytes each, against 72 for
+  // three corners: the fans of all levels together hold more triangles than the mesh).
+  std::vector<Vec3> points_;         // the mesh's positions, m
+  std::vector<Triangle> triangles_;  // #F triangles in tree order
+  std::vector<Triangle> fans_;       // boundary fans of the inner nodes, edges in their own direction
   std::vector<Node> nodes_;         // nodes_[0] is the root
   Aabb bounds_;
   bool closed_ = false;
