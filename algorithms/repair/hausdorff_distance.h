@@ -2,10 +2,11 @@
 /// Step 6 of the repair: how far the repaired surface lies from the input surface.
 ///
 /// Design note: the input may be non-manifold, open or self-intersecting, so it is sampled and
-/// searched as a triangle soup (CGAL's sample_triangle_soup, an AABB tree of its triangles), never as
-/// a halfedge mesh. Each surface is sampled at its vertices plus `points_per_face * #F` points (at
-/// least `min_points`) uniformly at random over its area with a fixed seed, so the figure is
-/// deterministic; each sample's distance to the other surface is exact. The result is the larger of
+/// searched as a triangle soup (area-weighted sampling of its own, CGAL's AABB tree of its triangles,
+/// queried without the search hint, which changed results between processes), never as a halfedge
+/// mesh. Each surface is sampled at its vertices plus `points_per_face * #F` points (at least
+/// `min_points`) uniformly at random over its area with a fixed seed (SplitMix64), so the figure is
+/// the same in every run; each sample's distance to the other surface is exact. The result is the larger of
 /// the two one-sided maxima: a lower bound of the true Hausdorff distance that misses it by at most
 /// about the gap between samples (docs/repair.md, "Hausdorff distance").
 

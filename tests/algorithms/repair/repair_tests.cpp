@@ -6,6 +6,7 @@
 #include "algorithms/core/random.h"
 #include "algorithms/core/self_intersection.h"
 #include "algorithms/core/shell_classification.h"
+#include "algorithms/repair/hausdorff_distance.h"
 #include "algorithms/repair/repair_solid.h"
 #include "tests/support/mesh_fixtures.h"
 
@@ -235,4 +236,17 @@ TEST_CASE("repair: data set open cubes are filled to their bounding box, flat sh
     REQUIRE_FALSE(result.ok());
     CHECK_THAT(result.error().message, StartsWith(name + ": ") && Contains("open sheet"));
   }
+}
+
+TEST_CASE("repair: the Hausdorff estimate is the same on every call and bounded by the true distance", "[repair]") {
+  // Two overlapping unit cubes against their union, the 1.5 x 1 x 1 box: the inner faces' centres lie
+  // 0.5 from the box, nothing lies farther, so the true distance is 0.5 and samples give at most that.
+  Mesh soup = make_box(Vec3::Ones());
+  append_mesh(soup, make_box(Vec3::Ones(), Vec3(0.5, 0.0, 0.0)));
+  const Mesh box = make_box(Vec3(1.5, 1.0, 1.0), Vec3(0.25, 0.0, 0.0));
+  const double first = repair::hausdorff_distance(soup, box);
+  CHECK(repair::hausdorff_distance(soup, box) == first);
+  CHECK(repair::hausdorff_distance(box, soup) == first);
+  CHECK(first <= 0.5 + 1e-12);
+  CHECK(first >= 0.45);
 }
