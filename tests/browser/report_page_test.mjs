@@ -126,10 +126,15 @@ function makeResults(cli, work, args) {
     stability: path.join(work, "stability.json"),
     table: path.join(work, "table.json"),
     tableFragments: path.join(work, "table-fragments"),
+    prefetch: path.join(work, "schedule-prefetch.json"),
+    amortized: path.join(work, "schedule-amortized.json"),
     textured: path.join(work, "textured-fragments"),
   };
   shatterbench(cli, ["grid", "--case", "building", "--prefracture", "10,20", "--runtime", "5,10", "--repetitions", "2",
     "--frames", "30", "--no-cache", "--record-frames", "--json", files.grid], [0, 1]);
+  for (const schedule of ["prefetch", "amortized"])
+    shatterbench(cli, ["grid", "--case", "building", "--prefracture", "10", "--runtime", "5", "--repetitions", "1", "--frames", "30",
+      "--no-cache", "--schedule", schedule, "--json", files[schedule]], [0, 1]);
   const hostile = JSON.parse(fs.readFileSync(files.grid, "utf8"));
   hostile.case.name = HOSTILE_NAME;
   fs.writeFileSync(files.hostile, JSON.stringify(hostile));
@@ -203,12 +208,18 @@ async function checkReport(page, files) {
   const maps = await page.$$eval('[data-chart="heat-map"]', (els) => els.map((e) => ({
     marks: Number(e.dataset.marks), buttons: e.querySelectorAll(".heat-cell").length,
     failed: e.querySelectorAll(".heat-cell.failed").length })));
-  check(maps.length === 4, `heat maps: expected 4 (grid, hostile copy, copies with and without stages), found ${maps.length}`);
-  for (const m of maps) {
+  check(maps.length === 6, `heat maps: expected 6 (grid, hostile copy, copies with and without stages, two schedules), found ${maps.length}`);
+  for (const m of maps.slice(0, 4)) {
     check(m.marks === grid.cells.length, `heat map: data-marks ${m.marks}, the grid has ${grid.cells.length} cells`);
     check(m.buttons === grid.cells.length, `heat map: ${m.buttons} cells drawn, the grid has ${grid.cells.length}`);
   }
-  check(maps.map((m) => m.failed).join(",") === "0,0,1,0", `failed cells drawn: ${maps.map((m) => m.failed)}, expected 0,0,1,0`);
+  check(maps.map((m) => m.failed).join(",") === "0,0,1,0,0,0", `failed cells drawn: ${maps.map((m) => m.failed)}, expected 0,0,1,0,0,0`);
+
+  // The schedules side by side: building's 10 x 5 cell ran immediate (the grid), prefetch and amortized.
+  const schedules = await page.$$eval('[data-chart="schedules"]', (els) => els.map((e) => ({ cell: e.dataset.cell, marks: Number(e.dataset.marks),
+    rows: Number(e.querySelector('[data-table="schedules"]').dataset.rows), canvas: e.querySelectorAll("canvas").length })));
+  check(schedules.length === 1 && schedules[0].cell === "10 x 5" && schedules[0].marks === 3 && schedules[0].rows === 3 && schedules[0].canvas > 0,
+    `schedules side by side: ${JSON.stringify(schedules)}, expected one view of cell 10 x 5 with 3 schedules`);
 
   // The hostile case name is text, and the only scripts are the page's two.
   const headings = await page.$$eval('[data-section="grid"] h2', (els) => els.map((e) => e.textContent));
@@ -426,7 +437,7 @@ async function main() {
   const files = makeResults(args.cli, work, args);
   const out = path.join(work, "report");
   execFileSync(args.cli, ["report", files.grid, files.hostile, files.staged, files.legacy, files.accuracy, files.stability,
-    files.table, files.tableFragments, files.textured, "--out", out],
+    files.table, files.tableFragments, files.textured, files.prefetch, files.amortized, "--out", out],
     { stdio: ["ignore", "ignore", "inherit"] });
   const reportFile = path.join(out, "report.html");
 
@@ -458,7 +469,7 @@ async function main() {
       const copyUrl = pathToFileURL(copy).href;
       const opened = await openGuarded(browser, copyUrl, "copied report.html");
       const marks = await opened.page.$$eval('[data-chart="heat-map"]', (els) => els.map((e) => Number(e.dataset.marks)));
-      check(marks.length === 4 && marks.every((m) => m > 0), `the copied page drew no heat map: ${JSON.stringify(marks)}`);
+      check(marks.length === 6 && marks.every((m) => m > 0), `the copied page drew no heat map: ${JSON.stringify(marks)}`);
       const copyLoaded = opened.requests.filter((r) => !/^(data|blob):/.test(r));
       check(copyLoaded.length === 1 && copyLoaded[0] === copyUrl, `the copied page loaded more than itself: ${JSON.stringify(copyLoaded)}`);
       await opened.page.waitForFunction(() => document.body.dataset.drawn !== undefined, { timeout: 60000 });

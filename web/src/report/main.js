@@ -12,6 +12,7 @@ import { runsTable, stabilityTable } from "./tables.js";
 import { timeline } from "./timeline.js";
 import { fragmentGroups, fragmentsSection } from "./fragments_view.js";
 import { playback } from "./playback.js";
+import { schedulesSection } from "./schedules.js";
 import { readRecordedFrames } from "./recorded_frames.js";
 import { unpack } from "./inflate.js";
 
@@ -85,11 +86,12 @@ function render() {
   const root = document.getElementById("report") || document.body;
   const sections = [
     ...data.grids.map(gridSection),
+    schedulesSection(data.grids),
     ...data.accuracy.map(accuracySection),
     ...data.stability.map((e) => tableSection("stability", "Stability verdicts", e, stabilityTable)),
     ...data.tables.map((e) => tableSection("table", "Fracture table", e, runsTable)),
     ...fragmentGroups(data.fragments).map(fragmentsSection),
-  ];
+  ].filter(Boolean);
   const counts = [[data.grids.length, "grid"], [data.accuracy.length, "accuracy"], [data.stability.length, "stability"], [data.tables.length, "table"],
     [data.fragments.length, "fragments folder"]]
     .filter(([n]) => n > 0).map(([n, what]) => `${n} ${what}`);
