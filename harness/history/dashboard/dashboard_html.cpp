@@ -1,8 +1,8 @@
 #include "harness/history/dashboard/dashboard_html.h"
 
 #include "harness/history/dashboard/dashboard_bundle.h"
-#include "harness/report/html/html_page.h"
-#include "harness/report/html/script_json.h"
+#include "harness/output/html_page.h"
+#include "harness/output/script_json.h"
 
 namespace shatter {
 

@@ -1,9 +1,9 @@
 #include "harness/report/html/report_html.h"
 
-#include "harness/report/html/html_page.h"
+#include "harness/output/html_page.h"
 #include "harness/report/html/report_bundle.h"
 #include "harness/report/html/report_data.h"
-#include "harness/report/html/script_json.h"
+#include "harness/output/script_json.h"
 
 namespace shatter {
 

@@ -83,7 +83,7 @@ TEST_CASE("dashboard data: the filters' fields, the settings, a window of commit
   CHECK((*empty)["commits"].empty());
 }
 
-TEST_CASE("dashboard data: commits of one second in their generation's order; an acknowledged step is not open",
+TEST_CASE("dashboard data: commits of one second in their generation's order, and an acknowledged step is not open",
           "[history][dashboard]") {
   const std::string location = (history_scratch("dashboard_ack") / "h.sqlite").string();
   HistoryStore store = open_or_fail(location);

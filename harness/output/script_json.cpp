@@ -1,4 +1,4 @@
-#include "harness/report/html/script_json.h"
+#include "harness/output/script_json.h"
 
 namespace shatter {
 

@@ -1,4 +1,4 @@
-#include "harness/report/html/html_page.h"
+#include "harness/output/html_page.h"
 
 namespace shatter {
 

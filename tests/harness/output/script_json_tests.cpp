@@ -1,6 +1,6 @@
 // json_for_script_element: JSON that no text can turn into markup inside a <script> element.
 
-#include "harness/report/html/script_json.h"
+#include "harness/output/script_json.h"
 
 #include <catch2/catch.hpp>
 
