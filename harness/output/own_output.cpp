@@ -24,6 +24,8 @@ bool is_own_output_file(const std::filesystem::path& file) {
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
   head.resize(static_cast<std::size_t>(in.gcount()));
   if (head.empty()) return true;
+  // A grid's recorded frames (results/recorded_frames.h): binary, recognised by their magic.
+  if (starts_with(head, "SBFRAMES")) return true;
   std::string_view text(head);
   const std::size_t first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) return true;  // white space only

@@ -22,12 +22,15 @@ Result<std::string> read_grid_recording(const nlohmann::json& j, const std::stri
   Result<std::filesystem::path> sidecar =
       resolve_reference(folder.empty() ? std::filesystem::path(".") : folder, name, kMaxResultsFileBytes, file + ": recorded_frames.path");
   if (!sidecar) return sidecar.error();
-  Result<std::string> bytes = read_file_bounded(*sidecar, kMaxResultsFileBytes, "recorded frames");
-  if (!bytes) return bytes.error();
-  if (bytes->size() > room)
+  // The limit is checked on the size before anything is read (resolve_reference found a regular file).
+  std::error_code ec;
+  const std::uintmax_t size = std::filesystem::file_size(*sidecar, ec);
+  if (!ec && size > room)
     return Error{fmt::format("{}: {} bytes of recorded frames, past the report's limit of {} bytes for playback "
                              "(docs/report.md, Limits): record fewer cells or frames",
-                             sidecar->string(), bytes->size(), kMaxReportRecordingBytes)};
+                             sidecar->string(), size, kMaxReportRecordingBytes)};
+  Result<std::string> bytes = read_file_bounded(*sidecar, room, "recorded frames");
+  if (!bytes) return bytes.error();
   if (Result<std::vector<RecordedFrames>> decoded = decode_recorded_frames(*bytes, sidecar->string()); !decoded)
     return decoded.error();
   used += bytes->size();

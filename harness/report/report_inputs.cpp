@@ -193,7 +193,6 @@ void check_schema_version(const Json& j) {
                                kReportSchemaVersion)};
 }
 
-
 }  // namespace
 
 Result<ReportInputs> read_report_inputs(std::span<const std::string> files) {

@@ -112,6 +112,19 @@ TEST_CASE("cli: grid --record-frames writes every body in every frame beside the
   int last = 0;
   for (std::size_t b = 0; b < rec.bodies.size(); ++b) last += (rec.pose(29, static_cast<int>(b)).flags & kPosePresent) ? 1 : 0;
   CHECK(last == sample.at("bodies").get<int>());
+
+  // Run again into the same files: the sidecar is shatterbench's own, so it is replaced; a file of
+  // the user's with that name is not.
+  const auto again = run_cli("grid --case building --prefracture 10 --runtime 5 --frames 30 --repetitions 1 --no-cache "
+                             "--record-frames --json " + json.string());
+  INFO(again.err);
+  CHECK((again.exit_code == 0 || again.exit_code == 1));
+  std::filesystem::resize_file(sidecar, 4);  // "SBFR": no longer the magic
+  const auto refused = run_cli("grid --case building --prefracture 10 --runtime 5 --frames 30 --repetitions 1 --no-cache "
+                               "--record-frames --json " + json.string());
+  CHECK(refused.exit_code == 2);
+  CHECK(refused.err.find("not replaced") != std::string::npos);
+  CHECK(std::filesystem::file_size(sidecar) == 4);
 }
 
 TEST_CASE("cli: grid --record-frames past its limit or with flags it cannot serve: exit 2, one line, nothing written",
