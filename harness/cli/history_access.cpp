@@ -111,6 +111,13 @@ int record_if_asked(const RecordFlags& flags, const std::string& text, const std
   return record_results({{text, source}}, flags.store, CommitFlags{}, std::cerr);
 }
 
+Result<std::int64_t> since_time(HistoryStore& store, const std::string& revision, const std::string& repo) {
+  if (revision.empty()) return std::numeric_limits<std::int64_t>::min();
+  Result<CommitInfo> c = recorded_commit(store, revision, repo);
+  if (!c) return Error{"--since: " + c.error().message};
+  return c->time;
+}
+
 Result<CommitInfo> recorded_commit(HistoryStore& store, const std::string& revision, const std::string& repo) {
   Result<std::optional<CommitInfo>> found = store.find_commit(revision);
   if (!found) return found.error();

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <ostream>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,10 @@ int record_if_asked(const RecordFlags& flags, const std::string& text, const std
 /// The commit `revision` names: a sha prefix recorded in `store`, else what git at `repo` says (and
 /// is then required to be recorded). Error names the revision.
 Result<CommitInfo> recorded_commit(HistoryStore& store, const std::string& revision, const std::string& repo);
+
+/// The commit time `--since REV` starts at (recorded_commit; the error prefixed "--since: "), or the
+/// earliest time when `revision` is empty: every commit.
+Result<std::int64_t> since_time(HistoryStore& store, const std::string& revision, const std::string& repo);
 
 /// A series in one line for tables: "building · 100 x 25 voronoi/... · stage physics · cpu_ms".
 std::string series_label(const SeriesKey& key);

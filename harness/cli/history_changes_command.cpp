@@ -44,15 +44,11 @@ int run_csv(const ChangesOptions& o) {
 int run_store(const ChangesOptions& o) {
   Result<HistoryStore> store = open_store(o.store, false);
   if (!store) return fail_input(store.error().message);
-  std::int64_t since = std::numeric_limits<std::int64_t>::min();
-  if (!o.since.empty()) {
-    Result<CommitInfo> c = recorded_commit(*store, o.since, o.repo);
-    if (!c) return fail_input("--since: " + c.error().message);
-    since = c->time;
-  }
+  const Result<std::int64_t> since = since_time(*store, o.since, o.repo);
+  if (!since) return fail_input(since.error().message);
   std::size_t stepped = 0, regressions = 0, count = 0;
   std::string table;
-  Status visited = store->visit_series_runs(o.filter, since, [&](const SeriesInfo& info, std::vector<SeriesRun>& runs) {
+  Status visited = store->visit_series_runs(o.filter, *since, [&](const SeriesInfo& info, std::vector<SeriesRun>& runs) {
     const std::vector<CommitPoint> points = commit_points(runs);
     if (points.empty()) return Status{};
     ++count;

@@ -37,13 +37,9 @@ int run_dashboard(const DashboardOptions& o) {
     return fail_input(s.error().message);
   Result<HistoryStore> store = open_store(o.store, false);
   if (!store) return fail_input(store.error().message);
-  std::int64_t since = std::numeric_limits<std::int64_t>::min();
-  if (!o.since.empty()) {
-    Result<CommitInfo> c = recorded_commit(*store, o.since, o.repo);
-    if (!c) return fail_input("--since: " + c.error().message);
-    since = c->time;
-  }
-  Result<nlohmann::json> data = dashboard_data(*store, o.filter, o.gate, since);
+  const Result<std::int64_t> since = since_time(*store, o.since, o.repo);
+  if (!since) return fail_input(since.error().message);
+  Result<nlohmann::json> data = dashboard_data(*store, o.filter, o.gate, *since);
   if (!data) return fail_input(data.error().message);
   std::size_t changes = 0, regressed = 0;
   for (const nlohmann::json& s : (*data)["series"]) {
