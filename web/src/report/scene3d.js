@@ -67,11 +67,17 @@ export class View3D {
   draw() {
     const r = renderer();
     if (!r) return;
+    // The shared drawing buffer only grows (resizing it is costly); a view renders into its lower-left
+    // corner, which is the bottom of the buffer's canvas.
     const size = r.getSize(new THREE.Vector2());
-    if (size.x !== this.width || size.y !== this.height) r.setSize(this.width, this.height, false);
+    if (size.x < this.width || size.y < this.height) r.setSize(Math.max(size.x, this.width), Math.max(size.y, this.height), false);
+    const height = r.getSize(new THREE.Vector2()).y;
+    r.setViewport(0, 0, this.width, this.height);
+    r.setScissor(0, 0, this.width, this.height);
+    r.setScissorTest(true);
     r.render(this.scene, this.camera);
     const ctx = this.canvas.getContext("2d");
-    ctx.drawImage(r.domElement, 0, 0, this.width, this.height, 0, 0, this.width, this.height);
+    ctx.drawImage(r.domElement, 0, height - this.height, this.width, this.height, 0, 0, this.width, this.height);
     this.drawn += 1;
     this.canvas.dataset.drawn = String(this.drawn);
   }
